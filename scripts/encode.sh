@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Encodes a folder of frames (frame_0000.png, frame_0001.png, ...) into an MP4:
+# H.264, yuv420p (plays everywhere), the movie's fps, +faststart (plays while
+# downloading). The MP4 is written under a temporary name and renamed, so it
+# is whole or absent.
+#
+#   scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N]      (default fps: 30)
+set -euo pipefail
+
+die() { echo "encode.sh: error: $*" >&2; exit 2; }
+
+[[ $# -ge 2 ]] || die "usage: scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N]"
+dir=$1 out=$2 fps=30
+shift 2
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --fps) [[ $# -ge 2 ]] || die "--fps needs a value"; fps=$2; shift 2 ;;
+    *) die "unknown option '$1'" ;;
+  esac
+done
+[[ $fps =~ ^[0-9]+([.][0-9]+)?$ ]] && awk "BEGIN{exit !($fps > 0)}" || die "--fps must be a number > 0, got '$fps'"
+command -v ffmpeg >/dev/null || die "ffmpeg not found; install it with: apt-get install ffmpeg"
+[[ -d $dir ]] || die "no such folder: $dir"
+
+# The frames must be frame_0..frame_{n-1}, all with the same zero padding.
+mapfile -t frames < <(cd "$dir" && ls -1 | grep -E '^frame_[0-9]+\.png$' | sort)
+n=${#frames[@]}
+[[ $n -gt 0 ]] || die "$dir holds no frames (frame_0000.png, ...)"
+digits=$(( ${#frames[0]} - 10 ))  # "frame_" + digits + ".png"
+for ((i = 0; i < n; i++)); do
+  want=$(printf "frame_%0${digits}d.png" "$i")
+  [[ ${frames[$i]} == "$want" ]] || die "$dir has a gap or stray frame: expected $want, found ${frames[$i]} (render the missing frames with 'firsthit frames MOVIE --resume')"
+done
+
+tmp="$(dirname "$out")/.$(basename "$out").tmp-$$.mp4"
+trap 'rm -f "$tmp"' EXIT
+# pad: H.264 in yuv420p needs even sides.
+ffmpeg -hide_banner -loglevel error -y -framerate "$fps" -i "$dir/frame_%0${digits}d.png" \
+  -vf "pad=ceil(iw/2)*2:ceil(ih/2)*2" -c:v libx264 -preset medium -pix_fmt yuv420p \
+  -movflags +faststart "$tmp"
+mv -f "$tmp" "$out"
+trap - EXIT
+echo "encoded $n frames at $fps fps into $out"

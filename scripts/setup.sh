@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Sets up a fresh Debian 12 machine: installs what is missing (apt-get) and
+# configures and builds firsthit in build/ (Release).
+#   bash scripts/setup.sh
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+
+packages=(build-essential cmake pkg-config libglm-dev libstb-dev libyaml-cpp-dev
+          googletest libgtest-dev ffmpeg)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [[ ${#missing[@]} -gt 0 ]]; then
+  echo "setup: installing ${missing[*]}"
+  sudo=""; [[ $(id -u) -eq 0 ]] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$here/build" -j "$(nproc)"
+echo "setup: built $here/build/firsthit"

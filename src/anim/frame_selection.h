@@ -1,0 +1,34 @@
+// Which frames of a movie a run renders, and what their files are called.
+// A frame's number and file name depend only on its global index, never on
+// the range or shard that selected it.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fh {
+
+struct FrameRange {
+    int begin = 0;  // [begin, end)
+    int end = 0;
+};
+
+struct Shard {
+    int index = 0;  // K
+    int count = 1;  // N: this shard renders frames i with i mod N == K
+};
+
+// Frames of [0, frame_count) in the range and the shard, in increasing order.
+// A range reaching past the movie is an error (std::invalid_argument).
+std::vector<int> select_frames(int frame_count, std::optional<FrameRange> range,
+                               std::optional<Shard> shard);
+
+// "A:B" -> FrameRange; "K/N" -> Shard; std::invalid_argument on bad syntax or values.
+FrameRange parse_range(const std::string& text);
+Shard parse_shard(const std::string& text);
+
+// frame_0042.png: zero-padded to 4 digits, or more when the movie needs them.
+std::string frame_file_name(int frame, int frame_count);
+
+}  // namespace fh

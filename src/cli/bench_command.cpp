@@ -1,0 +1,59 @@
+// firsthit bench FILE: how fast one frame renders (no file writing).
+#include <algorithm>
+#include <iostream>
+
+#include "cli/commands.h"
+#include "cli/job.h"
+#include "cli/stats_output.h"
+
+namespace fh {
+
+const char* const kBenchHelp =
+    R"(usage: firsthit bench FILE [options]
+
+Renders one frame several times after a warm-up run and prints, as key: value
+lines, the median time per frame (rendering only, no PNG), rays per second and
+the rays traced by kind.
+
+  --frame N        movie files: the frame (default 0)
+  --camera NAME    scene files: the camera (default: the first listed)
+  --runs K         timed runs (default 7)
+  --threads N      worker threads (default: one per core)
+  --spp N, --depth N, --precision P   as for render
+)";
+
+int run_bench(const Words& words) {
+    if (wants_help(words, kBenchHelp)) return 0;
+    auto spec = job_flags();
+    spec.insert(spec.end(), {{"--threads"}, {"--runs"}});
+    const Args args = Args::parse("bench", words, spec);
+    const RenderJob job = load_job(args);
+    const int runs = args.integer("--runs", 7, 1, 10000);
+    ThreadPool pool(args.integer("--threads", 0, 0, 1024));
+
+    FrameResult r = render_frame(job.scene, job.camera, job.settings, job.effects, &pool);  // warm-up
+    std::vector<double> ms;
+    for (int i = 0; i < runs; ++i) {
+        r = render_frame(job.scene, job.camera, job.settings, job.effects, &pool);
+        ms.push_back(r.render_ms);
+    }
+    std::sort(ms.begin(), ms.end());
+    const double median = ms.size() % 2 ? ms[ms.size() / 2]
+                                        : (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]) / 2;
+    std::cout << "file: " << job.file << "\n";
+    if (job.frame >= 0) std::cout << "frame: " << job.frame << "\n";
+    std::cout << "width: " << job.camera.width << "\n"
+              << "height: " << job.camera.height << "\n"
+              << "precision: " << precision_name(job.settings.precision) << "\n"
+              << "threads: " << pool.size() << "\n"
+              << "runs: " << runs << "\n"
+              << "ms_per_frame: " << median << "\n"
+              << "ms_min: " << ms.front() << "\n"
+              << "ms_max: " << ms.back() << "\n"
+              << "rays_per_second: " << double(r.counts.total()) / (median / 1000.0) << "\n";
+    print_plan(std::cout, r.plan);
+    print_counts(std::cout, r.counts);
+    return 0;
+}
+
+}  // namespace fh

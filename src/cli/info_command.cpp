@@ -1,0 +1,64 @@
+// firsthit info FILE: what a scene or movie file holds, as key: value lines
+// (the encode script reads a movie's fps from it).
+#include <iostream>
+
+#include "anim/frame_selection.h"
+#include "anim/movie.h"
+#include "cli/commands.h"
+#include "cli/job.h"
+#include "io/input_error.h"
+#include "io/movie_loader.h"
+#include "io/scene_loader.h"
+
+namespace fh {
+
+const char* const kInfoHelp =
+    R"(usage: firsthit info FILE
+
+Prints what a scene or movie file holds, as key: value lines: for a movie its
+frame count, fps, seconds, camera and image size; for a scene its surfaces,
+lights and cameras.
+)";
+
+namespace {
+void print_scene(const Scene& s) {
+    std::cout << "materials: " << s.materials.size() << "\n"
+              << "spheres: " << s.spheres.size() << "\n"
+              << "planes: " << s.planes.size() << "\n"
+              << "triangles: " << s.triangles.size() << "\n"
+              << "lights:";
+    for (const auto& l : s.ambient_lights) std::cout << " " << l.name;
+    for (const auto& l : s.directional_lights) std::cout << " " << l.name;
+    for (const auto& l : s.spot_lights) std::cout << " " << l.name;
+    std::cout << "\ncameras:";
+    for (const auto& c : s.cameras) std::cout << " " << c.name;
+    std::cout << "\nsamples_per_pixel: " << s.render.samples_per_pixel << "\n"
+              << "max_depth: " << s.render.max_depth << "\n"
+              << "effects: " << s.effects.names() << "\n";
+}
+}  // namespace
+
+int run_info(const Words& words) {
+    if (wants_help(words, kInfoHelp)) return 0;
+    const Args args = Args::parse("info", words, {});
+    if (args.positional().size() != 1) throw UsageError("expected one FILE");
+    const std::string file = args.positional()[0];
+    if (is_movie_file(file)) {
+        const Movie m = load_movie(file);
+        std::cout << "kind: movie\n"
+                  << "frames: " << m.frame_count() << "\n"
+                  << "fps: " << m.fps << "\n"
+                  << "seconds: " << m.seconds << "\n"
+                  << "camera: " << m.camera.name << "\n"
+                  << "width: " << m.camera.width << "\n"
+                  << "height: " << m.camera.height << "\n"
+                  << "first_frame_file: " << frame_file_name(0, m.frame_count()) << "\n";
+        print_scene(m.scene);
+    } else {
+        std::cout << "kind: scene\n";
+        print_scene(load_scene(file));
+    }
+    return 0;
+}
+
+}  // namespace fh

@@ -1,0 +1,70 @@
+// firsthit render FILE: one frame to PNG.
+#include <filesystem>
+#include <iostream>
+
+#include "cli/commands.h"
+#include "cli/job.h"
+#include "cli/stats_output.h"
+#include "io/png_writer.h"
+
+namespace fh {
+
+const char* const kRenderHelp =
+    R"(usage: firsthit render FILE [options]
+
+Renders one frame of a scene or movie file to a PNG.
+
+  FILE               a scene file, or a movie file (which names its scene)
+  --camera NAME      scene files: the camera to render (default: the first listed)
+  --frame N          movie files: the frame index, 0 .. frames-1 (default 0)
+  --spp N            samples per pixel (default: the file's, else 1)
+  --depth N          maximum chain of reflection rays (default: the file's, else 5)
+  --precision P      float or double: the tracer's scalar type (default double)
+  --threads N        worker threads (default: one per core)
+  --stats            print what was traced, as key: value lines on stdout
+  -o, --output OUT   the PNG to write (default: FILE's name with .png, in the
+                     current folder; for a movie, NAME_frameNNNN.png)
+)";
+
+namespace {
+std::string default_output(const RenderJob& job) {
+    std::string stem = std::filesystem::path(job.file).stem().string();
+    if (job.frame >= 0) {
+        std::string n = std::to_string(job.frame);
+        stem += "_frame" + std::string(n.size() < 4 ? 4 - n.size() : 0, '0') + n;
+    }
+    return stem + ".png";
+}
+}  // namespace
+
+int run_render(const Words& words) {
+    if (wants_help(words, kRenderHelp)) return 0;
+    auto spec = job_flags();
+    spec.insert(spec.end(), {{"--threads"}, {"--stats", false}, {"-o"}, {"--output"}});
+    const Args args = Args::parse("render", words, spec);
+    const RenderJob job = load_job(args);
+    const int threads = args.integer("--threads", 0, 0, 1024);
+    std::string out = args.value("-o").value_or(args.value("--output").value_or(""));
+    if (out.empty()) out = default_output(job);
+
+    ThreadPool pool(threads);
+    const FrameResult r = render_frame(job.scene, job.camera, job.settings, job.effects, &pool);
+    write_png(out, r.image);
+    if (args.has("--stats")) {
+        std::cout << "file: " << job.file << "\n";
+        if (job.frame >= 0) std::cout << "frame: " << job.frame << "\n";
+        std::cout << "camera: " << job.camera.name << "\n"
+                  << "width: " << job.camera.width << "\n"
+                  << "height: " << job.camera.height << "\n"
+                  << "samples_per_pixel: " << job.settings.samples_per_pixel << "\n"
+                  << "precision: " << precision_name(job.settings.precision) << "\n"
+                  << "threads: " << pool.size() << "\n";
+        print_plan(std::cout, r.plan);
+        print_counts(std::cout, r.counts);
+        std::cout << "render_ms: " << r.render_ms << "\n"
+                  << "output: " << out << "\n";
+    }
+    return 0;
+}
+
+}  // namespace fh

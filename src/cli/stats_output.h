@@ -1,0 +1,24 @@
+// `key: value` lines on stdout, the form --stats and bench print.
+#pragma once
+
+#include <iostream>
+#include <string>
+
+#include "render/render.h"
+
+namespace fh {
+
+inline void print_counts(std::ostream& out, const RayCounts& c) {
+    out << "rays.primary: " << c.primary << "\n"
+        << "rays.shadow: " << c.shadow << "\n"
+        << "rays.reflection: " << c.reflection << "\n"
+        << "rays.total: " << c.total() << "\n"
+        << "nonfinite_samples: " << c.nonfinite_samples << "\n";
+}
+
+inline void print_plan(std::ostream& out, const EffectPlan& plan) {
+    out << "effects: " << plan.effects.names() << "\n"
+        << "max_depth: " << plan.max_depth << "\n";
+}
+
+}  // namespace fh

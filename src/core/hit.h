@@ -1,0 +1,30 @@
+// The nearest intersection along a ray, and the surface point it names.
+#pragma once
+
+#include <cstdint>
+
+#include "core/vec.h"
+
+namespace fh {
+
+enum class ShapeKind : std::uint8_t { none, sphere, plane, triangle };
+
+// What the intersection loop keeps: cheap to update in the hot loop.
+template <typename T>
+struct Hit {
+    T t = kInfinity<T>;
+    ShapeKind kind = ShapeKind::none;
+    int index = -1;  // into the scene's array of that kind
+
+    bool found() const { return kind != ShapeKind::none; }
+};
+
+// What shading needs, computed once for the nearest hit only.
+template <typename T>
+struct SurfacePoint {
+    Vec3<T> point;   // projected back onto the surface (see each shape's point_at)
+    Vec3<T> normal;  // unit, facing the incoming ray (report 8.4)
+    int material = -1;
+};
+
+}  // namespace fh

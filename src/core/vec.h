@@ -1,0 +1,36 @@
+// Vectors and colours of the tracer, over its scalar type T (float or double).
+// The tracer is a template on T so both precisions live in one binary
+// (the `precision` render setting picks one at run time).
+#pragma once
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace fh {
+
+template <typename T>
+using Vec3 = glm::vec<3, T, glm::defaultp>;
+
+using dvec3 = Vec3<double>;
+
+// Colours are the report's 0..255 values, kept unclamped until the final pixel.
+template <typename T>
+using Color = Vec3<T>;
+
+template <typename T>
+inline constexpr T kInfinity = std::numeric_limits<T>::infinity();
+
+template <typename T>
+inline bool is_finite(const Vec3<T>& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+template <typename T>
+inline T max_abs_component(const Vec3<T>& v) {
+    return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
+}
+
+}  // namespace fh

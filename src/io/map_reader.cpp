@@ -1,0 +1,70 @@
+#include "io/map_reader.h"
+
+#include <algorithm>
+
+namespace fh {
+
+MapReader::MapReader(const YamlReader& reader, const YAML::Node& map, std::string what,
+                     const std::vector<std::string>& allowed)
+    : reader_(reader), map_(map), what_(std::move(what)) {
+    reader_.expect_map(map_, what_);
+    for (auto it = map_.begin(); it != map_.end(); ++it) {
+        const YAML::Node& key = it->first;
+        if (!key.IsScalar()) reader_.fail(key, "expected a name as key in " + what_ + ", " + got(key));
+        const std::string& name = key.Scalar();
+        // yaml-cpp keeps both copies of a repeated key and lookups see the first:
+        // a repeated key is almost surely a mistake.
+        if (find(name)) reader_.fail(key, "duplicate key '" + name + "' in " + what_);
+        if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
+            const std::string hint = closest_match(name, allowed);
+            reader_.fail(key, "unknown key '" + name + "' in " + what_ +
+                                  (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+        }
+        entries_.push_back({name, key, it->second});
+    }
+}
+
+const MapReader::Entry* MapReader::find(const std::string& key) const {
+    for (const Entry& e : entries_)
+        if (e.key == key) return &e;
+    return nullptr;
+}
+
+const MapReader::Entry& MapReader::required(const std::string& key) const {
+    const Entry* e = find(key);
+    if (!e) reader_.fail(map_, "missing key '" + key + "' in " + what_);
+    return *e;
+}
+
+YAML::Node MapReader::value(const std::string& key) const {
+    const Entry& e = required(key);
+    if (e.value.IsNull()) reader_.fail(e.key_node, "missing value for '" + key + "'");
+    return e.value;
+}
+
+double MapReader::number(const std::string& key) const { return reader_.number(value(key), key); }
+
+double MapReader::number_or(const std::string& key, double fallback) const {
+    return has(key) ? number(key) : fallback;
+}
+
+double MapReader::number_at_least(const std::string& key, double min) const {
+    return reader_.number_at_least(value(key), key, min);
+}
+
+double MapReader::positive(const std::string& key) const { return reader_.positive(value(key), key); }
+
+int MapReader::integer(const std::string& key, int min, int max) const {
+    return reader_.integer(value(key), key, min, max);
+}
+
+bool MapReader::boolean_or(const std::string& key, bool fallback) const {
+    return has(key) ? reader_.boolean(value(key), key) : fallback;
+}
+
+std::string MapReader::string(const std::string& key) const { return reader_.string(value(key), key); }
+dvec3 MapReader::vec3(const std::string& key) const { return reader_.vec3(value(key), key); }
+dvec3 MapReader::color(const std::string& key) const { return reader_.color(value(key), key); }
+dvec3 MapReader::direction(const std::string& key) const { return reader_.direction(value(key), key); }
+
+}  // namespace fh

@@ -1,0 +1,210 @@
+#include "io/scene_loader.h"
+
+#include <algorithm>
+
+#include "io/map_reader.h"
+
+namespace fh {
+
+namespace {
+
+using Keys = std::vector<std::string>;
+
+constexpr double kTwoPi = 6.283185307179586;
+
+// v / |v| without overflow for huge components (v is known non-zero).
+dvec3 unit(const dvec3& v) {
+    const dvec3 scaled = v / max_abs_component(v);
+    return scaled / glm::length(scaled);
+}
+
+// An optional block: absent or empty (null) gives a null node.
+YAML::Node block(const MapReader& map, const std::string& key) {
+    const MapReader::Entry* e = map.find(key);
+    return e ? e->value : YAML::Node();
+}
+
+Material<double> read_material(const YamlReader& r, const YAML::Node& node, const std::string& name) {
+    const MapReader m(r, node, "material '" + name + "'",
+                      {"color", "ambient_color", "diffuse_color", "specular_color", "ambient", "diffuse",
+                       "specular", "phong_exponent", "glazed", "reflectivity"});
+    // `color` is shared by the three terms; a per-term colour overrides it, and
+    // only when all three are given may `color` be left out.
+    const bool all_terms = m.has("ambient_color") && m.has("diffuse_color") && m.has("specular_color");
+    const dvec3 base = (all_terms && !m.has("color")) ? dvec3(0) : m.color("color");
+    Material<double> mat;
+    mat.ambient_color = m.has("ambient_color") ? m.color("ambient_color") : base;
+    mat.diffuse_color = m.has("diffuse_color") ? m.color("diffuse_color") : base;
+    mat.specular_color = m.has("specular_color") ? m.color("specular_color") : base;
+    mat.ambient = m.number_at_least("ambient", 0);
+    mat.diffuse = m.number_at_least("diffuse", 0);
+    mat.specular = m.number_at_least("specular", 0);
+    mat.phong_exponent = m.number_at_least("phong_exponent", 0);
+    mat.glazed = m.boolean_or("glazed", false);
+    mat.reflectivity = m.has("reflectivity") ? m.number_at_least("reflectivity", 0) : 0;
+    return mat;
+}
+
+void read_materials(const YamlReader& r, const YAML::Node& node, Scene& scene) {
+    if (node.IsNull()) return;
+    const MapReader names(r, node, "'materials'", {});
+    for (const MapReader::Entry& e : names.entries()) {
+        scene.material_names.push_back(e.key);
+        scene.materials.push_back(read_material(r, e.value, e.key));
+    }
+}
+
+int material_index(const MapReader& m, const Scene& scene) {
+    const YAML::Node node = m.value("material");
+    const std::string name = m.reader().string(node, "material");
+    const auto& names = scene.material_names;
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end()) {
+        const std::string hint = closest_match(name, names);
+        m.reader().fail(node, "undefined material '" + name + "'" +
+                                  (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+    }
+    return static_cast<int>(it - names.begin());
+}
+
+void read_triangle(const MapReader& m, int material, Scene& scene) {
+    const YAML::Node v = m.value("vertices");
+    const YamlReader& r = m.reader();
+    if (!v.IsSequence() || v.size() != 3) r.fail(v, "expected a list of 3 points for 'vertices'");
+    // A zero-area triangle is accepted: it has a zero normal and never hits.
+    scene.triangles.push_back(Triangle<double>::make(r.vec3(v[0], "vertices"), r.vec3(v[1], "vertices"),
+                                                     r.vec3(v[2], "vertices"), material));
+}
+
+void read_surface(const YamlReader& r, const YAML::Node& node, Scene& scene) {
+    // The type decides which keys are allowed, so it is read first.
+    const MapReader any(r, node, "surface", {});
+    const int type = r.choice(any.value("type"), "surface type", {"sphere", "plane", "triangle"});
+    if (type == 0) {
+        const MapReader m(r, node, "sphere", {"type", "center", "radius", "material"});
+        const dvec3 center = m.vec3("center");
+        const double radius = m.positive("radius");
+        scene.spheres.push_back({center, radius, material_index(m, scene)});
+    } else if (type == 1) {
+        const MapReader m(r, node, "plane", {"type", "normal", "distance", "material"});
+        const dvec3 normal = m.direction("normal");
+        const double distance = m.number("distance");
+        // n.x = d and (n/s).x = d/s are the same plane: scale both alike.
+        const double scale = max_abs_component(normal);
+        const double length = glm::length(normal / scale);
+        scene.planes.push_back({unit(normal), distance / scale / length, material_index(m, scene)});
+    } else {
+        const MapReader m(r, node, "triangle", {"type", "vertices", "material"});
+        read_triangle(m, material_index(m, scene), scene);
+    }
+}
+
+void read_surfaces(const YamlReader& r, const YAML::Node& node, Scene& scene) {
+    if (node.IsNull()) return;
+    r.expect_list(node, "'surfaces'");
+    for (const YAML::Node& surface : node) read_surface(r, surface, scene);
+}
+
+void read_light(const YamlReader& r, const MapReader::Entry& entry, Scene& scene) {
+    const MapReader any(r, entry.value, "light '" + entry.key + "'", {});
+    const int type = r.choice(any.value("type"), "light type", {"ambient", "directional", "spot"});
+    if (type == 0) {
+        const MapReader m(r, entry.value, "ambient light '" + entry.key + "'", {"type", "color", "intensity"});
+        if (!scene.ambient_lights.empty())
+            r.fail(entry.key_node, "second ambient light '" + entry.key + "' (at most one is allowed)");
+        scene.ambient_lights.push_back({entry.key, m.color("color"), m.number_at_least("intensity", 0)});
+    } else if (type == 1) {
+        const MapReader m(r, entry.value, "directional light '" + entry.key + "'",
+                          {"type", "color", "intensity", "direction"});
+        scene.directional_lights.push_back(
+            {entry.key, m.color("color"), m.number_at_least("intensity", 0), unit(m.direction("direction"))});
+    } else {
+        const MapReader m(r, entry.value, "spot light '" + entry.key + "'",
+                          {"type", "color", "intensity", "position", "direction", "max_angle"});
+        SpotLight<double> spot;
+        spot.name = entry.key;
+        spot.color = m.color("color");
+        spot.intensity = m.number_at_least("intensity", 0);
+        spot.position = m.vec3("position");
+        spot.axis = unit(m.direction("direction"));
+        spot.max_angle = m.has("max_angle") ? m.positive("max_angle") : kTwoPi;
+        scene.spot_lights.push_back(spot);
+    }
+}
+
+void read_lights(const YamlReader& r, const YAML::Node& node, Scene& scene) {
+    if (node.IsNull()) return;
+    const MapReader names(r, node, "'lights'", {});
+    for (const MapReader::Entry& e : names.entries()) read_light(r, e, scene);
+}
+
+Camera read_camera(const YamlReader& r, const MapReader::Entry& entry) {
+    const MapReader any(r, entry.value, "camera '" + entry.key + "'", {});
+    const int type = r.choice(any.value("type"), "camera type", {"perspective", "orthographic"});
+    const bool perspective = type == 0;
+    Keys keys = {"type", "width", "height", "view_point", "look_at", "up"};
+    if (perspective) keys.push_back("projection_distance");
+    const MapReader m(r, entry.value, std::string(perspective ? "perspective" : "orthographic") +
+                                          " camera '" + entry.key + "'", keys);
+    Camera cam;
+    cam.name = entry.key;
+    cam.projection = perspective ? Projection::perspective : Projection::orthographic;
+    cam.width = m.integer("width", 1, Limits::max_image_side);
+    cam.height = m.integer("height", 1, Limits::max_image_side);
+    cam.view_point = m.vec3("view_point");
+    cam.look_at = m.direction("look_at");
+    cam.up = m.direction("up");
+    if (perspective) cam.projection_distance = m.positive("projection_distance");
+    return cam;
+}
+
+void read_cameras(const YamlReader& r, const MapReader& top, Scene& scene) {
+    const YAML::Node node = top.value("cameras");
+    const MapReader names(r, node, "'cameras'", {});
+    if (names.entries().empty()) r.fail(node, "'cameras' must name at least one camera");
+    for (const MapReader::Entry& e : names.entries()) scene.cameras.push_back(read_camera(r, e));
+}
+
+}  // namespace
+
+void read_render_settings(const YamlReader& r, const YAML::Node& node, RenderSettings& settings) {
+    if (node.IsNull()) return;
+    const MapReader m(r, node, "'render'", {"samples_per_pixel", "max_depth", "precision"});
+    if (m.has("samples_per_pixel"))
+        settings.samples_per_pixel = m.integer("samples_per_pixel", 1, Limits::max_samples_per_pixel);
+    if (m.has("max_depth")) settings.max_depth = m.integer("max_depth", 0, Limits::max_depth);
+    if (m.has("precision"))
+        settings.precision = r.choice(m.value("precision"), "precision", {"float", "double"}) == 0
+                                 ? Precision::single
+                                 : Precision::dual;
+}
+
+Effects read_effects(const YamlReader& r, const YAML::Node& node) {
+    r.expect_list(node, "'effects'");
+    Effects fx{false, false, false, false, false};
+    bool* flags[] = {&fx.ambient, &fx.diffuse, &fx.specular, &fx.shadows, &fx.glazing};
+    for (const YAML::Node& name : node)
+        *flags[r.choice(name, "effect", {"ambient", "diffuse", "specular", "shadows", "glazing"})] = true;
+    return fx;
+}
+
+Scene load_scene(const std::string& path) {
+    try {
+        const YamlReader r(path);
+        const MapReader top(r, r.load_map("scene"), "scene",
+                            {"materials", "surfaces", "lights", "cameras", "render", "effects"});
+        Scene scene;
+        // Materials first, whatever the file's order: surfaces refer to them.
+        read_materials(r, block(top, "materials"), scene);
+        read_surfaces(r, block(top, "surfaces"), scene);
+        read_lights(r, block(top, "lights"), scene);
+        read_cameras(r, top, scene);
+        read_render_settings(r, block(top, "render"), scene.render);
+        if (top.has("effects")) scene.effects = read_effects(r, top.value("effects"));
+        return scene;
+    } catch (const YAML::Exception& e) {
+        throw to_input_error(path, e);
+    }
+}
+
+}  // namespace fh

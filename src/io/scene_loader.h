@@ -1,0 +1,32 @@
+// The scene file (docs: INTERFACE.md, "Scene file"): materials, surfaces,
+// lights, cameras, and optional render settings and effects. Loading is strict:
+// unknown or repeated keys, values of the wrong type or out of range, names that
+// refer to nothing are all fh::InputError with the file, line and column.
+#pragma once
+
+#include <string>
+
+#include "scene/scene.h"
+
+namespace YAML {
+class Node;
+}
+
+namespace fh {
+
+class YamlReader;
+
+// Loads a scene file. Unreadable file, YAML syntax error or any bad value:
+// InputError. Normals and light directions come out unit length; a plane's
+// distance is rescaled with its normal so it stays the same plane.
+Scene load_scene(const std::string& path);
+
+// The `render:` map (samples_per_pixel, max_depth, precision): each key given
+// replaces the value in `settings`, so a movie can override a scene's. A null
+// node changes nothing.
+void read_render_settings(const YamlReader& reader, const YAML::Node& node, RenderSettings& settings);
+
+// The `effects:` list: the effects named are on, all others off.
+Effects read_effects(const YamlReader& reader, const YAML::Node& node);
+
+}  // namespace fh

@@ -1,0 +1,110 @@
+// The scene as the hot loop reads it: contiguous arrays per shape kind in the
+// tracer's scalar type, only the lights that can contribute, and each light's
+// colour products with each material computed once per frame instead of once
+// per ray. Built from a Scene for one frame; no allocation after that.
+#pragma once
+
+#include <vector>
+
+#include "core/hit.h"
+#include "render/settings.h"
+#include "scene/scene.h"
+
+namespace fh {
+
+// intensity * strength * (light colour (.) material colour), for one light and
+// one material; the spot light's falloff multiplies it per point.
+template <typename T>
+struct LightTerms {
+    Color<T> diffuse{0};
+    Color<T> specular{0};
+};
+
+// What the frame will simulate: the effects asked for, minus those that
+// cannot contribute (nothing glazed, no light of a kind, ...).
+struct EffectPlan {
+    Effects effects;
+    int max_depth = 0;  // 0 when glazing is off
+};
+
+template <typename T>
+struct FlatScene {
+    std::vector<Sphere<T>> spheres;
+    std::vector<Plane<T>> planes;
+    std::vector<Triangle<T>> triangles;
+    std::vector<Material<T>> materials;
+    std::vector<Color<T>> ambient_terms;  // per material
+    std::vector<DirectionalLight<T>> directional_lights;
+    std::vector<SpotLight<T>> spot_lights;
+    std::vector<LightTerms<T>> directional_terms;  // [light * materials + material]
+    std::vector<LightTerms<T>> spot_terms;         // [light * materials + material]
+    EffectPlan plan;
+
+    static FlatScene build(const Scene& scene, const Effects& effects, int max_depth);
+
+    // Nearest surface with t > 0 along the ray.
+    Hit<T> closest(const Ray<T>& ray) const {
+        Hit<T> hit;
+        for (int i = 0; i < int(spheres.size()); ++i) {
+            const T t = spheres[i].intersect(ray, T(0), hit.t);
+            if (t < hit.t) hit = {t, ShapeKind::sphere, i};
+        }
+        for (int i = 0; i < int(planes.size()); ++i) {
+            const T t = planes[i].intersect(ray, T(0), hit.t);
+            if (t < hit.t) hit = {t, ShapeKind::plane, i};
+        }
+        for (int i = 0; i < int(triangles.size()); ++i) {
+            const T t = triangles[i].intersect(ray, T(0), hit.t);
+            if (t < hit.t) hit = {t, ShapeKind::triangle, i};
+        }
+        return hit;
+    }
+
+    // Is any surface in (0, t_max) along the ray? Stops at the first one.
+    bool occluded(const Ray<T>& ray, T t_max) const {
+        for (const auto& s : spheres)
+            if (s.intersect(ray, T(0), t_max) < t_max) return true;
+        for (const auto& p : planes)
+            if (p.intersect(ray, T(0), t_max) < t_max) return true;
+        for (const auto& tr : triangles)
+            if (tr.intersect(ray, T(0), t_max) < t_max) return true;
+        return false;
+    }
+
+    // Point, normal facing the ray, and material of a hit.
+    SurfacePoint<T> surface(const Ray<T>& ray, const Hit<T>& hit) const {
+        SurfacePoint<T> sp;
+        switch (hit.kind) {
+        case ShapeKind::sphere: {
+            const Sphere<T>& s = spheres[hit.index];
+            sp.point = s.point_at(ray, hit.t);
+            sp.normal = s.normal_at(sp.point);
+            sp.material = s.material;
+            break;
+        }
+        case ShapeKind::plane: {
+            const Plane<T>& p = planes[hit.index];
+            sp.point = p.point_at(ray, hit.t);
+            sp.normal = p.normal;
+            sp.material = p.material;
+            break;
+        }
+        case ShapeKind::triangle: {
+            const Triangle<T>& tr = triangles[hit.index];
+            sp.point = tr.point_at(ray, hit.t);
+            sp.normal = tr.normal;
+            sp.material = tr.material;
+            break;
+        }
+        case ShapeKind::none:
+            break;
+        }
+        if (glm::dot(sp.normal, ray.direction) > T(0)) sp.normal = -sp.normal;
+        return sp;
+    }
+};
+
+extern template struct FlatScene<float>;
+extern template struct FlatScene<double>;
+
+}  // namespace fh

@@ -1,0 +1,95 @@
+#include "render/render.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "render/sampler.h"
+#include "render/shading.h"
+
+namespace fh {
+
+namespace {
+
+// One sample: clamp each sample on its own (SPEC section 4); a non-finite one
+// is counted and contributes black.
+template <typename T>
+Color<T> clamped(Color<T> c, RayCounts& counts) {
+    if (!is_finite(c)) {
+        ++counts.nonfinite_samples;
+        return Color<T>(0);
+    }
+    return glm::clamp(c, Color<T>(0), Color<T>(255));
+}
+
+inline std::uint8_t to_byte(double v) { return std::uint8_t(std::floor(v + 0.5)); }
+
+template <typename T>
+void render_tile(const Shader<T>& shader, const CameraRays<T>& rays, int spp, int x0, int y0,
+                 int x1, int y1, Image& image, RayCounts& counts) {
+    const StrataGrid grid = strata_for(spp);
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            Color<double> sum(0);
+            for (int s = 0; s < spp; ++s) {
+                const SampleOffset o = sample_offset(x, y, s, grid);
+                const Ray<T> ray = rays.generate(T(x + o.x), T(y + o.y));
+                ++counts.primary;
+                sum += Color<double>(clamped(shader.trace(ray, counts), counts));
+            }
+            const Color<double> mean = sum / double(spp);
+            std::uint8_t* px = image.pixel(x, y);
+            px[0] = to_byte(mean.r);
+            px[1] = to_byte(mean.g);
+            px[2] = to_byte(mean.b);
+        }
+    }
+}
+
+template <typename T>
+FrameResult render_with(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                        const Effects& effects, ThreadPool* pool) {
+    const auto start = std::chrono::steady_clock::now();
+    const FlatScene<T> flat = FlatScene<T>::build(scene, effects, settings.max_depth);
+    const Shader<T> shader(flat);
+    const CameraRays<T> rays(camera);
+    FrameResult result;
+    result.image = Image(camera.width, camera.height);
+    result.plan = flat.plan;
+
+    const int tiles_x = (camera.width + kTileSize - 1) / kTileSize;
+    const int tiles_y = (camera.height + kTileSize - 1) / kTileSize;
+    const int workers = pool ? pool->size() : 1;
+    // One counter block per worker, a cache line apart so they do not share one.
+    struct alignas(64) PaddedCounts {
+        RayCounts c;
+    };
+    std::vector<PaddedCounts> counts(static_cast<size_t>(workers));
+    auto tile = [&](int t, int worker) {
+        const int x0 = (t % tiles_x) * kTileSize;
+        const int y0 = (t / tiles_x) * kTileSize;
+        render_tile(shader, rays, settings.samples_per_pixel, x0, y0,
+                    std::min(x0 + kTileSize, camera.width), std::min(y0 + kTileSize, camera.height),
+                    result.image, counts[size_t(worker)].c);
+    };
+    if (pool) {
+        pool->parallel_for(tiles_x * tiles_y, tile);
+    } else {
+        for (int t = 0; t < tiles_x * tiles_y; ++t) tile(t, 0);
+    }
+    for (const auto& c : counts) result.counts += c.c;
+    result.render_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace
+
+FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                         const Effects& effects, ThreadPool* pool) {
+    if (settings.precision == Precision::single)
+        return render_with<float>(scene, camera, settings, effects, pool);
+    return render_with<double>(scene, camera, settings, effects, pool);
+}
+
+}  // namespace fh

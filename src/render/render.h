@@ -1,0 +1,29 @@
+// Rendering one frame: the image is cut into tiles handed out to a thread
+// pool; each pixel depends only on its own coordinates, so the bytes are the
+// same for any number of threads.
+#pragma once
+
+#include "render/flat_scene.h"
+#include "render/image.h"
+#include "render/settings.h"
+#include "render/stats.h"
+#include "render/thread_pool.h"
+#include "scene/scene.h"
+
+namespace fh {
+
+struct FrameResult {
+    Image image;
+    RayCounts counts;
+    EffectPlan plan;
+    double render_ms = 0;
+};
+
+// pool == nullptr renders on the calling thread only (the frame generator
+// runs one frame per worker that way).
+FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                         const Effects& effects, ThreadPool* pool);
+
+inline constexpr int kTileSize = 16;
+
+}  // namespace fh

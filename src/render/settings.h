@@ -1,0 +1,50 @@
+// What a render is asked to do: quality knobs and the effects switched on.
+#pragma once
+
+#include <string>
+
+namespace fh {
+
+enum class Precision { single, dual };  // float, double: the tracer's scalar type
+
+inline const char* precision_name(Precision p) { return p == Precision::single ? "float" : "double"; }
+
+// Documented limits: past these a request is refused as bad input rather than
+// attempted (a 100000 x 100000 image would need 30 GB).
+struct Limits {
+    static constexpr int max_image_side = 16384;
+    static constexpr int max_samples_per_pixel = 4096;
+    static constexpr int max_depth = 64;
+};
+
+struct RenderSettings {
+    int samples_per_pixel = 1;
+    int max_depth = 5;  // reflection rays a primary ray may spawn in a chain
+    Precision precision = Precision::dual;
+};
+
+// The effects of the report's shading (SPEC section 4).
+struct Effects {
+    bool ambient = true;
+    bool diffuse = true;
+    bool specular = true;
+    bool shadows = true;
+    bool glazing = true;
+
+    std::string names() const {
+        std::string s;
+        auto add = [&](bool on, const char* n) {
+            if (!on) return;
+            if (!s.empty()) s += ' ';
+            s += n;
+        };
+        add(ambient, "ambient");
+        add(diffuse, "diffuse");
+        add(specular, "specular");
+        add(shadows, "shadows");
+        add(glazing, "glazing");
+        return s;
+    }
+};
+
+}  // namespace fh

@@ -1,0 +1,44 @@
+// The scene as a file describes it (report sections 3-7): surfaces, materials,
+// lights and cameras, in double precision, plus the scene's default render
+// settings and effects. The tracer builds its own flat copy in its scalar type
+// for each frame (render/flat_scene.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/plane.h"
+#include "geometry/sphere.h"
+#include "geometry/triangle.h"
+#include "render/settings.h"
+#include "scene/camera.h"
+#include "scene/lights.h"
+#include "scene/material.h"
+#include "scene/spot_light.h"
+
+namespace fh {
+
+struct Scene {
+    std::vector<std::string> material_names;  // parallel to materials
+    std::vector<Material<double>> materials;
+    std::vector<Sphere<double>> spheres;
+    std::vector<Plane<double>> planes;
+    std::vector<Triangle<double>> triangles;
+    std::vector<AmbientLight<double>> ambient_lights;  // at most one
+    std::vector<DirectionalLight<double>> directional_lights;
+    std::vector<SpotLight<double>> spot_lights;
+    std::vector<Camera> cameras;
+    RenderSettings render;
+    Effects effects;
+
+    const Camera* find_camera(const std::string& name) const {
+        for (const Camera& c : cameras)
+            if (c.name == name) return &c;
+        return nullptr;
+    }
+};
+
+// Keeps only the named lights switched on (a movie's `lights:` list).
+void keep_only_lights(Scene& scene, const std::vector<std::string>& names);
+
+}  // namespace fh

@@ -1,0 +1,46 @@
+// --range, --shard and frame file names.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "anim/frame_selection.h"
+
+namespace fh {
+namespace {
+
+TEST(FrameSelection, RangeIsHalfOpen) {
+    EXPECT_EQ(select_frames(300, FrameRange{10, 13}, std::nullopt), (std::vector<int>{10, 11, 12}));
+    EXPECT_EQ(select_frames(3, std::nullopt, std::nullopt), (std::vector<int>{0, 1, 2}));
+}
+
+TEST(FrameSelection, ShardsCoverEveryFrameExactlyOnce) {
+    for (int shards : {1, 2, 3, 7, 300, 301}) {
+        std::vector<int> count(300, 0);
+        for (int k = 0; k < shards; ++k)
+            for (int i : select_frames(300, std::nullopt, Shard{k, shards})) count[size_t(i)]++;
+        for (int c : count) ASSERT_EQ(c, 1) << shards << " shards";
+    }
+    EXPECT_EQ(select_frames(10, FrameRange{2, 8}, Shard{1, 3}), (std::vector<int>{4, 7}));
+}
+
+TEST(FrameSelection, ParsesAndRejects) {
+    EXPECT_EQ(parse_range("3:9").begin, 3);
+    EXPECT_EQ(parse_range("3:9").end, 9);
+    EXPECT_EQ(parse_shard("2/5").index, 2);
+    EXPECT_EQ(parse_shard("2/5").count, 5);
+    for (const char* bad : {"", "3", "9:3", "3:3", "a:b", "-1:4", "1:2:3"})
+        EXPECT_THROW(parse_range(bad), std::invalid_argument) << bad;
+    for (const char* bad : {"", "1", "5/5", "1/0", "x/2", "-1/2"})
+        EXPECT_THROW(parse_shard(bad), std::invalid_argument) << bad;
+    EXPECT_THROW(select_frames(300, FrameRange{0, 301}, std::nullopt), std::invalid_argument);
+}
+
+TEST(FrameSelection, FileNamesArePaddedToFourDigitsOrMore) {
+    EXPECT_EQ(frame_file_name(0, 300), "frame_0000.png");
+    EXPECT_EQ(frame_file_name(42, 300), "frame_0042.png");
+    EXPECT_EQ(frame_file_name(42, 10001), "frame_00042.png");
+    EXPECT_EQ(frame_file_name(9999, 10000), "frame_9999.png");
+}
+
+}  // namespace
+}  // namespace fh

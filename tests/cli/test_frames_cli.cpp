@@ -1,0 +1,137 @@
+// firsthit frames and scripts/encode.sh end to end, on a tiny movie
+// (64 x 64, 12 frames) made from the report's scene.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "cli/run_command.h"
+#include "support/png_read.h"
+
+namespace fh::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A 64x64 copy of the report's scene and a 12-frame orbit of it.
+fs::path tiny_movie(const std::string& name) {
+    const fs::path dir = fresh_dir(name);
+    std::string scene = slurp(source_path("animations/scene.yaml"));
+    scene = std::regex_replace(scene, std::regex("width: 800"), "width: 64");
+    scene = std::regex_replace(scene, std::regex("height: 800"), "height: 64");
+    std::ofstream(dir / "scene.yaml") << scene;
+    std::ofstream(dir / "tiny.yaml") << "scene: scene.yaml\ncamera: perspective\n"
+                                        "lights: [ambient, spot]\nfps: 12\nseconds: 1\n"
+                                        "animate:\n  view_point:\n    orbit: {center: [-10, -10, 16], "
+                                        "sin: [20, 0, 0], cos: [0, 0, 15]}\n"
+                                        "  look_at: {toward: [0, 0, 0]}\n";
+    return dir;
+}
+
+std::vector<std::string> frame_files(const fs::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string frames(const fs::path& dir, const std::string& extra) {
+    return "frames " + (dir / "tiny.yaml").string() + " --quiet " + extra;
+}
+
+TEST(FramesCli, RendersEveryFrameWhole) {
+    const fs::path dir = tiny_movie("frames_all");
+    const auto r = run_firsthit(frames(dir, "--out " + (dir / "f").string()));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto names = frame_files(dir / "f");
+    ASSERT_EQ(names.size(), 12u);
+    EXPECT_EQ(names.front(), "frame_0000.png");
+    EXPECT_EQ(names.back(), "frame_0011.png");
+    EXPECT_EQ(read_png((dir / "f" / "frame_0007.png").string()).width, 64);
+}
+
+TEST(FramesCli, RangeShardsAndResumeGiveTheSameBytesAsOneRun) {
+    const fs::path dir = tiny_movie("frames_parts");
+    ASSERT_EQ(run_firsthit(frames(dir, "--out " + (dir / "full").string())).status, 0);
+
+    ASSERT_EQ(run_firsthit(frames(dir, "--range 3:6 --out " + (dir / "range").string())).status, 0);
+    EXPECT_EQ(frame_files(dir / "range"),
+              (std::vector<std::string>{"frame_0003.png", "frame_0004.png", "frame_0005.png"}));
+
+    for (int k = 0; k < 3; ++k)
+        ASSERT_EQ(run_firsthit(frames(dir, "--shard " + std::to_string(k) + "/3 --threads 1 --out " +
+                                               (dir / "shards").string()))
+                      .status,
+                  0);
+    ASSERT_EQ(frame_files(dir / "shards"), frame_files(dir / "full"));
+    for (const auto& name : frame_files(dir / "full"))
+        EXPECT_EQ(slurp(dir / "shards" / name), slurp(dir / "full" / name)) << name;
+
+    // Lose two frames and truncate a third; --resume renders exactly those.
+    fs::remove(dir / "shards" / "frame_0002.png");
+    fs::remove(dir / "shards" / "frame_0007.png");
+    fs::resize_file(dir / "shards" / "frame_0009.png", 100);
+    const auto r = run_firsthit(frames(dir, "--resume --stats --out " + (dir / "shards").string()));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("frames: 3\n"), std::string::npos) << r.out;
+    for (const auto& name : frame_files(dir / "full"))
+        EXPECT_EQ(slurp(dir / "shards" / name), slurp(dir / "full" / name)) << name;
+}
+
+TEST(FramesCli, OneFrameFromRenderEqualsTheSameFrameOfTheMovie) {
+    const fs::path dir = tiny_movie("frames_single");
+    ASSERT_EQ(run_firsthit(frames(dir, "--out " + (dir / "f").string())).status, 0);
+    ASSERT_EQ(run_firsthit("render " + (dir / "tiny.yaml").string() + " --frame 5 -o " +
+                           (dir / "one.png").string())
+                  .status,
+              0);
+    EXPECT_EQ(slurp(dir / "one.png"), slurp(dir / "f" / "frame_0005.png"));
+}
+
+TEST(FramesCli, BadSelectionsAreUsageErrors) {
+    const fs::path dir = tiny_movie("frames_bad");
+    const std::string out = " --out " + (dir / "f").string();
+    EXPECT_EQ(run_firsthit(frames(dir, "--range 0:13" + out)).err,
+              "firsthit: error: --range 0:13 reaches past the movie's 12 frames\n");
+    EXPECT_EQ(run_firsthit(frames(dir, "--shard 3/3" + out)).err,
+              "firsthit: error: --shard 3/3: need 0 <= K < N\n");
+    EXPECT_EQ(run_firsthit(frames(dir, "--shard 3/3" + out)).status, 2);
+    EXPECT_EQ(run_firsthit("frames " + source_path("animations/scene.yaml")).status, 2);
+}
+
+TEST(EncodeScript, MakesAnMp4ThatFfprobeReads) {
+    const fs::path dir = tiny_movie("encode");
+    ASSERT_EQ(run_firsthit(frames(dir, "--out " + (dir / "f").string())).status, 0);
+    const fs::path mp4 = dir / "tiny.mp4";
+    const auto r = run_shell(source_path("scripts/encode.sh") + " " + (dir / "f").string() + " " +
+                             mp4.string() + " --fps 12");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto probe = run_shell(
+        "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+        "stream=codec_name,width,height,pix_fmt,nb_read_frames:format=duration -of "
+        "default=noprint_wrappers=1 " +
+        mp4.string());
+    ASSERT_EQ(probe.status, 0) << probe.err;
+    for (const char* line : {"codec_name=h264\n", "width=64\n", "height=64\n", "pix_fmt=yuv420p\n",
+                             "nb_read_frames=12\n", "duration=1.000000\n"})
+        EXPECT_NE(probe.out.find(line), std::string::npos) << line << " in\n" << probe.out;
+}
+
+TEST(EncodeScript, RefusesEmptyFoldersAndGaps) {
+    const fs::path dir = tiny_movie("encode_bad");
+    fs::create_directories(dir / "empty");
+    auto r = run_shell(source_path("scripts/encode.sh") + " " + (dir / "empty").string() + " " +
+                       (dir / "x.mp4").string());
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("holds no frames"), std::string::npos) << r.err;
+
+    ASSERT_EQ(run_firsthit(frames(dir, "--out " + (dir / "f").string())).status, 0);
+    fs::remove(dir / "f" / "frame_0004.png");
+    r = run_shell(source_path("scripts/encode.sh") + " " + (dir / "f").string() + " " +
+                  (dir / "x.mp4").string());
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("expected frame_0004.png, found frame_0005.png"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "x.mp4"));
+}
+
+}  // namespace
+}  // namespace fh::test

@@ -1,0 +1,116 @@
+// firsthit render, info and --help through the real binary: outputs, --stats
+// keys, exit statuses and the one-line errors.
+#include <gtest/gtest.h>
+
+#include "cli/run_command.h"
+#include "support/png_read.h"
+
+namespace fh::test {
+namespace {
+
+TEST(RenderCli, HelpNamesEveryCommand) {
+    const auto r = run_firsthit("--help");
+    EXPECT_EQ(r.status, 0);
+    for (const char* word : {"render", "frames", "bench", "info", "--spp", "--shard"})
+        EXPECT_NE(r.out.find(word), std::string::npos) << word;
+    EXPECT_EQ(run_firsthit("render --help").status, 0);
+    EXPECT_NE(run_firsthit("render --help").out.find("--camera NAME"), std::string::npos);
+}
+
+TEST(RenderCli, RendersBothCamerasWithStats) {
+    const auto dir = fresh_dir("render_cli");
+    for (const std::string cam : {"perspective", "orthographic"}) {
+        const auto out = (dir / (cam + ".png")).string();
+        const auto r = run_firsthit("render " + source_path("animations/scene.yaml") +
+                                    " --camera " + cam + " --threads 2 --stats -o " + out);
+        ASSERT_EQ(r.status, 0) << r.err;
+        const Image img = read_png(out);
+        EXPECT_EQ(img.width, 800);
+        EXPECT_EQ(img.height, 800);
+        for (const char* key : {"rays.primary: 640000\n", "rays.shadow: ", "rays.reflection: ",
+                                "nonfinite_samples: 0\n", "effects: ", "render_ms: "})
+            EXPECT_NE(r.out.find(key), std::string::npos) << key << " in\n" << r.out;
+    }
+}
+
+TEST(RenderCli, MatchesTheCommittedReferenceRenders) {
+    const auto dir = fresh_dir("render_reference");
+    for (const std::string cam : {"perspective", "orthographic"}) {
+        const auto out = (dir / (cam + ".png")).string();
+        ASSERT_EQ(run_firsthit("render " + source_path("animations/scene.yaml") + " --camera " +
+                               cam + " -o " + out)
+                      .status,
+                  0);
+        const Image ref = read_png(source_path("tests/data/scene_" + cam + ".png"));
+        ASSERT_EQ(ref.width, 800) << "reference image missing";
+        const ImageDiff d = compare(read_png(out), ref);
+        // Tolerance: rounding of a few pixels may move by one step across
+        // compilers and CPUs; anything larger is a change in the tracer.
+        EXPECT_LE(d.max_abs, 2);
+        EXPECT_LT(d.differing, size_t(800 * 800 * 3 / 1000));
+    }
+}
+
+TEST(RenderCli, MovieFrameRenders) {
+    const auto dir = fresh_dir("render_movie");
+    const auto out = (dir / "f42.png").string();
+    const auto r = run_firsthit("render " + source_path("animations/movie1.yaml") +
+                                " --frame 42 --stats -o " + out);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("frame: 42\n"), std::string::npos);
+    EXPECT_NE(r.out.find("effects: ambient diffuse specular shadows glazing\n"), std::string::npos);
+    EXPECT_EQ(read_png(out).width, 800);
+}
+
+TEST(RenderCli, UsageErrorsExitTwoWithOneLine) {
+    const std::string scene = source_path("animations/scene.yaml");
+    struct Case {
+        std::string args, message;
+    } cases[] = {
+        {"render " + scene + " --spx 4", "firsthit: error: unknown option '--spx' for 'render' (did you mean '--spp'?); see 'firsthit render --help'\n"},
+        {"render " + scene + " --spp 0", "firsthit: error: --spp must be in [1, 4096], got 0\n"},
+        {"render " + scene + " --camera persp", "firsthit: error: no camera 'persp' in " + scene + "\n"},
+        {"render " + scene + " --camera perspectve", "firsthit: error: no camera 'perspectve' in " + scene + " (did you mean 'perspective'?)\n"},
+        {"render " + scene + " --frame 3", "firsthit: error: --frame applies to movie files; " + scene + " is a scene\n"},
+        {"render " + source_path("animations/movie1.yaml") + " --frame 300", "firsthit: error: --frame must be in [0, 299], got 300\n"},
+        {"render", "firsthit: error: expected one FILE (a scene or movie file), got 0\n"},
+        {"paint", "firsthit: error: unknown command 'paint'; see 'firsthit --help'\n"},
+    };
+    for (const auto& c : cases) {
+        const auto r = run_firsthit(c.args);
+        EXPECT_EQ(r.status, 2) << c.args;
+        EXPECT_EQ(r.err, c.message) << c.args;
+    }
+}
+
+TEST(RenderCli, BadSceneFileIsOneLineWithPositionAndNoOutput) {
+    const auto dir = fresh_dir("render_bad");
+    const auto scene = dir / "bad.yaml";
+    std::ofstream(scene) << "materials:\n  red: {color: [255, 19, 1], ambient: 0.1, diffuse: 0.5, "
+                            "specular: 1.5, phong_exponent: 10}\nsurfaces:\n  - {type: sphere, "
+                            "center: [0, 0, 0], radius: -1, material: red}\n";
+    const auto out = dir / "out.png";
+    const auto r = run_firsthit("render " + scene.string() + " -o " + out.string());
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err.find(scene.string() + ":4:"), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(RenderCli, UnwritableOutputExitsOneAndLeavesNothing) {
+    const auto r = run_firsthit("render " + source_path("animations/scene.yaml") +
+                                " -o /nonexistent-dir/x.png");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.err.rfind("firsthit: error: cannot write /nonexistent-dir/x.png", 0), 0u) << r.err;
+}
+
+TEST(RenderCli, InfoDescribesAMovie) {
+    const auto r = run_firsthit("info " + source_path("animations/movie2.yaml"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* line : {"kind: movie\n", "frames: 300\n", "fps: 30\n", "camera: orthographic\n",
+                             "lights: ambient directional\n"})
+        EXPECT_NE(r.out.find(line), std::string::npos) << line << " in\n" << r.out;
+}
+
+}  // namespace
+}  // namespace fh::test

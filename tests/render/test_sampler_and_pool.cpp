@@ -1,0 +1,83 @@
+// The sampler's strata and determinism; the thread pool runs every task once.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <set>
+#include <stdexcept>
+
+#include "render/sampler.h"
+#include "render/thread_pool.h"
+
+namespace fh {
+namespace {
+
+TEST(Sampler, StrataAreAsSquareAsTheCountAllows) {
+    EXPECT_EQ(strata_for(1).nx, 1);
+    EXPECT_EQ(strata_for(4).nx, 2);
+    EXPECT_EQ(strata_for(4).ny, 2);
+    EXPECT_EQ(strata_for(8).nx, 4);
+    EXPECT_EQ(strata_for(8).ny, 2);
+    EXPECT_EQ(strata_for(7).nx, 7);
+    EXPECT_EQ(strata_for(7).ny, 1);
+}
+
+TEST(Sampler, OneSampleIsThePixelCentre) {
+    const auto o = sample_offset(13, 7, 0, strata_for(1));
+    EXPECT_EQ(o.x, 0.5);
+    EXPECT_EQ(o.y, 0.5);
+}
+
+TEST(Sampler, EachStratumGetsExactlyOneSample) {
+    for (int n : {2, 4, 8, 16, 64}) {
+        const StrataGrid g = strata_for(n);
+        std::set<std::pair<int, int>> cells;
+        for (int s = 0; s < n; ++s) {
+            const auto o = sample_offset(321, 123, s, g);
+            ASSERT_GE(o.x, 0);
+            ASSERT_LT(o.x, 1);
+            cells.insert({int(o.x * g.nx), int(o.y * g.ny)});
+        }
+        EXPECT_EQ(int(cells.size()), n) << n << " samples";
+    }
+}
+
+TEST(Sampler, SamplesDependOnlyOnPixelAndIndex) {
+    const StrataGrid g = strata_for(16);
+    const auto a = sample_offset(5, 9, 3, g);
+    const auto b = sample_offset(5, 9, 3, g);
+    const auto c = sample_offset(9, 5, 3, g);
+    EXPECT_EQ(a.x, b.x);
+    EXPECT_EQ(a.y, b.y);
+    EXPECT_NE(a.x, c.x);  // another pixel, other jitter
+}
+
+TEST(ThreadPool, RunsEveryTaskExactlyOnce) {
+    ThreadPool pool(3);
+    EXPECT_EQ(pool.size(), 3);
+    for (int round = 0; round < 20; ++round) {
+        std::vector<std::atomic<int>> seen(1000);
+        std::atomic<int> bad_worker{0};
+        pool.parallel_for(1000, [&](int task, int worker) {
+            seen[size_t(task)]++;
+            if (worker < 0 || worker >= 3) bad_worker++;
+        });
+        for (auto& s : seen) ASSERT_EQ(s.load(), 1);
+        EXPECT_EQ(bad_worker.load(), 0);
+    }
+}
+
+TEST(ThreadPool, RethrowsATasksException) {
+    ThreadPool pool(2);
+    EXPECT_THROW(pool.parallel_for(100,
+                                   [](int task, int) {
+                                       if (task == 37) throw std::runtime_error("task 37");
+                                   }),
+                 std::runtime_error);
+    // The pool still works afterwards.
+    std::atomic<int> n{0};
+    pool.parallel_for(10, [&](int, int) { n++; });
+    EXPECT_EQ(n.load(), 10);
+}
+
+}  // namespace
+}  // namespace fh
