@@ -9,7 +9,8 @@ MapReader::MapReader(const YamlReader& reader, const YAML::Node& map, std::strin
     : reader_(reader), map_(map), what_(std::move(what)) {
     reader_.expect_map(map_, what_);
     for (auto it = map_.begin(); it != map_.end(); ++it) {
-        const YAML::Node& key = it->first;
+        // A copy: the iterator's `->` hands out a proxy that dies with the statement.
+        const YAML::Node key = it->first;
         if (!key.IsScalar()) reader_.fail(key, "expected a name as key in " + what_ + ", " + got(key));
         const std::string& name = key.Scalar();
         // yaml-cpp keeps both copies of a repeated key and lookups see the first:
@@ -20,7 +21,7 @@ MapReader::MapReader(const YamlReader& reader, const YAML::Node& map, std::strin
             reader_.fail(key, "unknown key '" + name + "' in " + what_ +
                                   (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
         }
-        entries_.push_back({name, key, it->second});
+        entries_.push_back({key.Scalar(), key, it->second});
     }
 }
 

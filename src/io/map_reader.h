@@ -12,6 +12,7 @@ namespace fh {
 // A map whose keys are checked once, on construction, against the keys it may
 // have: unknown key (with a "did you mean" hint), duplicate key or non-scalar
 // key is an error at that key. `what` names the map in messages ("sphere").
+// An empty `allowed` accepts any key (maps from names to things).
 class MapReader {
 public:
     MapReader(const YamlReader& reader, const YAML::Node& map, std::string what,

@@ -29,7 +29,7 @@ public:
     [[noreturn]] void fail(const YAML::Node& node, const std::string& message) const;
 
     // Scalars and vectors. `name` is how the value is called in messages
-    // (usually its key); a null node is reported as a missing value.
+    // (usually its key). Quoted scalars ("1") are text, never numbers.
     double number(const YAML::Node& node, const std::string& name) const;  // finite
     double number_at_least(const YAML::Node& node, const std::string& name, double min) const;
     double positive(const YAML::Node& node, const std::string& name) const;  // finite, > 0
