@@ -37,7 +37,7 @@ second and the time left.
                    of a cluster job array; combines with --range
   --resume         skip frames whose file is already complete
   --threads N      worker threads (default: one per core)
-  --spp N, --depth N, --precision P   as for render
+  --spp N, --depth N, --precision P, --no-prune   as for render
   --stats          print the rays traced, as key: value lines on stdout
   --quiet          no progress line
 )";
@@ -47,7 +47,7 @@ int run_frames(const Words& words) {
     const Args args = Args::parse(
         "frames", words,
         {{"--out"}, {"--range"}, {"--shard"}, {"--resume", false}, {"--threads"}, {"--spp"},
-         {"--depth"}, {"--precision"}, {"--stats", false}, {"--quiet", false}});
+         {"--depth"}, {"--precision"}, {"--no-prune", false}, {"--stats", false}, {"--quiet", false}});
     if (args.positional().size() != 1)
         throw UsageError("expected one MOVIE file, got " + std::to_string(args.positional().size()));
     const std::string file = args.positional()[0];
@@ -66,16 +66,8 @@ int run_frames(const Words& words) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
-    // Quality flags on top of the movie's settings (load_job's rules).
     RenderSettings settings = movie.scene.render;
-    settings.samples_per_pixel =
-        args.integer("--spp", settings.samples_per_pixel, 1, Limits::max_samples_per_pixel);
-    settings.max_depth = args.integer("--depth", settings.max_depth, 0, Limits::max_depth);
-    if (const auto p = args.value("--precision")) {
-        if (*p != "float" && *p != "double")
-            throw UsageError("--precision must be 'float' or 'double', got '" + *p + "'");
-        settings.precision = *p == "float" ? Precision::single : Precision::dual;
-    }
+    apply_quality_flags(args, settings);
 
     namespace fs = std::filesystem;
     const fs::path out =

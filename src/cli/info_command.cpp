@@ -27,9 +27,9 @@ void print_scene(const Scene& s) {
               << "planes: " << s.planes.size() << "\n"
               << "triangles: " << s.triangles.size() << "\n"
               << "lights:";
-    for (const auto& l : s.ambient_lights) std::cout << " " << l.name;
-    for (const auto& l : s.directional_lights) std::cout << " " << l.name;
-    for (const auto& l : s.spot_lights) std::cout << " " << l.name;
+    for (const auto& l : s.ambient_lights) std::cout << " " << l.name << (l.on ? "" : "(off)");
+    for (const auto& l : s.directional_lights) std::cout << " " << l.name << (l.on ? "" : "(off)");
+    for (const auto& l : s.spot_lights) std::cout << " " << l.name << (l.on ? "" : "(off)");
     std::cout << "\ncameras:";
     for (const auto& c : s.cameras) std::cout << " " << c.name;
     std::cout << "\nsamples_per_pixel: " << s.render.samples_per_pixel << "\n"

@@ -10,21 +10,22 @@
 namespace fh {
 
 std::vector<FlagSpec> job_flags() {
-    return {{"--frame"}, {"--camera"}, {"--spp"}, {"--depth"}, {"--precision"}};
+    return {{"--frame"}, {"--camera"}, {"--spp"}, {"--depth"}, {"--precision"}, {"--no-prune", false}};
 }
-
-namespace {
 
 void apply_quality_flags(const Args& args, RenderSettings& s) {
     s.samples_per_pixel =
         args.integer("--spp", s.samples_per_pixel, 1, Limits::max_samples_per_pixel);
     s.max_depth = args.integer("--depth", s.max_depth, 0, Limits::max_depth);
+    s.prune = !args.has("--no-prune");
     if (const auto p = args.value("--precision")) {
         if (*p == "float") s.precision = Precision::single;
         else if (*p == "double") s.precision = Precision::dual;
         else throw UsageError("--precision must be 'float' or 'double', got '" + *p + "'");
     }
 }
+
+namespace {
 
 std::string frame_list(const std::vector<int>& frames) {
     std::string s;

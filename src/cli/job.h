@@ -26,6 +26,9 @@ std::vector<FlagSpec> job_flags();
 
 RenderJob load_job(const Args& args);
 
+// --spp, --depth, --precision and --no-prune on top of the file's settings.
+void apply_quality_flags(const Args& args, RenderSettings& settings);
+
 // Prints one warning line naming the frames whose camera used the fallback up.
 void warn_parallel_up(const std::string& file, const std::vector<int>& frames);
 

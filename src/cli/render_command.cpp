@@ -21,7 +21,11 @@ Renders one frame of a scene or movie file to a PNG.
   --depth N          maximum chain of reflection rays (default: the file's, else 5)
   --precision P      float or double: the tracer's scalar type (default double)
   --threads N        worker threads (default: one per core)
-  --stats            print what was traced, as key: value lines on stdout
+  --no-prune         debug: simulate every effect asked for, even those the
+                     effect plan proves cannot change a pixel (same image, slower)
+  --stats            print the effect plan (what is simulated and why the
+                     rest is not) and the rays traced by kind, as key: value
+                     lines on stdout
   -o, --output OUT   the PNG to write (default: FILE's name with .png, in the
                      current folder; for a movie, NAME_frameNNNN.png)
 )";

@@ -16,9 +16,14 @@ inline void print_counts(std::ostream& out, const RayCounts& c) {
         << "nonfinite_samples: " << c.nonfinite_samples << "\n";
 }
 
+// The effect plan: what is simulated, and why the rest is not.
 inline void print_plan(std::ostream& out, const EffectPlan& plan) {
     out << "effects: " << plan.effects.names() << "\n"
-        << "max_depth: " << plan.max_depth << "\n";
+        << "max_depth: " << plan.max_depth << "\n"
+        << "pruned: " << (plan.pruned ? "yes" : "no (--no-prune)") << "\n"
+        << "skipped: ";
+    for (size_t i = 0; i < plan.skipped.size(); ++i) out << (i ? "; " : "") << plan.skipped[i];
+    out << (plan.skipped.empty() ? "nothing\n" : "\n");
 }
 
 }  // namespace fh

@@ -1,7 +1,5 @@
 #include "render/flat_scene.h"
 
-#include <algorithm>
-
 namespace fh {
 
 namespace {
@@ -25,8 +23,10 @@ LightTerms<T> terms(const Material<double>& m, const dvec3& light_color, double 
 }  // namespace
 
 template <typename T>
-FlatScene<T> FlatScene<T>::build(const Scene& scene, const Effects& effects, int max_depth) {
+FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
     FlatScene<T> f;
+    f.plan = plan;
+    const Effects& fx = plan.effects;
     for (const auto& s : scene.spheres)
         f.spheres.push_back({Vec3<T>(s.center), T(s.radius), s.material});
     for (const auto& p : scene.planes)
@@ -39,46 +39,39 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const Effects& effects, int
     }
     for (const auto& m : scene.materials) f.materials.push_back(cast<T>(m));
 
-    // The plan: what can contribute to this frame.
-    EffectPlan& plan = f.plan;
-    plan.effects = effects;
-    const bool any_glazed = std::any_of(scene.materials.begin(), scene.materials.end(),
-                                        [](const auto& m) { return m.glazed; });
-    plan.effects.glazing = effects.glazing && any_glazed && max_depth > 0;
-    plan.max_depth = plan.effects.glazing ? max_depth : 0;
-
+    // A light that is off but simulated anyway (plan not pruned) shines with 0.
+    auto intensity = [](const auto& l) { return l.on ? l.intensity : 0.0; };
     const size_t nm = scene.materials.size();
     f.ambient_terms.assign(nm, Color<T>(0));
-    bool any_ambient = false;
     for (const auto& a : scene.ambient_lights) {
-        if (!effects.ambient || a.intensity == 0) continue;
-        any_ambient = true;
+        if (!fx.ambient || !plan.uses(a)) continue;
         for (size_t m = 0; m < nm; ++m) {
             const auto& mat = scene.materials[m];
-            f.ambient_terms[m] += Color<T>(a.intensity * mat.ambient * a.color * mat.ambient_color);
+            f.ambient_terms[m] +=
+                Color<T>(intensity(a) * mat.ambient * a.color * mat.ambient_color);
         }
     }
-    plan.effects.ambient = any_ambient;
-
-    const bool direct = effects.diffuse || effects.specular;
+    if (!fx.diffuse && !fx.specular) return f;
     for (const auto& l : scene.directional_lights) {
-        if (!direct || l.intensity == 0) continue;
-        f.directional_lights.push_back({l.name, Color<T>(l.color), T(l.intensity),
+        if (!plan.uses(l)) continue;
+        f.directional_lights.push_back({l.name, Color<T>(l.color), T(intensity(l)),
                                         Vec3<T>(l.direction)});
         for (const auto& mat : scene.materials)
-            f.directional_terms.push_back(terms<T>(mat, l.color, l.intensity, effects));
+            f.directional_terms.push_back(terms<T>(mat, l.color, intensity(l), fx));
     }
     for (const auto& l : scene.spot_lights) {
-        if (!direct || l.intensity == 0) continue;
-        f.spot_lights.push_back({l.name, Color<T>(l.color), T(l.intensity), Vec3<T>(l.position),
-                                 Vec3<T>(l.axis), T(l.max_angle)});
+        if (!plan.uses(l)) continue;
+        // The falloff keeps the real intensity; an off light (simulated only
+        // when not pruning) gets zero colour terms instead, so its shadow rays
+        // are still traced.
+        SpotLight<T> spot{l.name, Color<T>(l.color), T(l.intensity), Vec3<T>(l.position),
+                          Vec3<T>(l.axis), T(l.max_angle)};
+        // theta never exceeds pi, so a cone that wide needs no test.
+        spot.cone_test = !plan.pruned || l.max_angle < 3.14159265358979323846;
+        f.spot_lights.push_back(spot);
         for (const auto& mat : scene.materials)
-            f.spot_terms.push_back(terms<T>(mat, l.color, 1.0, effects));
+            f.spot_terms.push_back(terms<T>(mat, l.color, l.on ? 1.0 : 0.0, fx));  // x falloff
     }
-    const bool any_direct_light = !f.directional_lights.empty() || !f.spot_lights.empty();
-    plan.effects.diffuse = effects.diffuse && any_direct_light;
-    plan.effects.specular = effects.specular && any_direct_light;
-    plan.effects.shadows = effects.shadows && any_direct_light;
     return f;
 }
 

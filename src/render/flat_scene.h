@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/hit.h"
-#include "render/settings.h"
+#include "render/effect_plan.h"
 #include "scene/scene.h"
 
 namespace fh {
@@ -18,13 +18,6 @@ template <typename T>
 struct LightTerms {
     Color<T> diffuse{0};
     Color<T> specular{0};
-};
-
-// What the frame will simulate: the effects asked for, minus those that
-// cannot contribute (nothing glazed, no light of a kind, ...).
-struct EffectPlan {
-    Effects effects;
-    int max_depth = 0;  // 0 when glazing is off
 };
 
 template <typename T>
@@ -40,7 +33,8 @@ struct FlatScene {
     std::vector<LightTerms<T>> spot_terms;         // [light * materials + material]
     EffectPlan plan;
 
-    static FlatScene build(const Scene& scene, const Effects& effects, int max_depth);
+    // Only what the plan simulates: lights it uses, terms of its effects.
+    static FlatScene build(const Scene& scene, const EffectPlan& plan);
 
     // Nearest surface with t > 0 along the ray.
     Hit<T> closest(const Ray<T>& ray) const {

@@ -24,8 +24,8 @@ Color<T> clamped(Color<T> c, RayCounts& counts) {
 
 inline std::uint8_t to_byte(double v) { return std::uint8_t(std::floor(v + 0.5)); }
 
-template <typename T>
-void render_tile(const Shader<T>& shader, const CameraRays<T>& rays, int spp, int x0, int y0,
+template <typename T, typename S>
+void render_tile(const S& shader, const CameraRays<T>& rays, int spp, int x0, int y0,
                  int x1, int y1, Image& image, RayCounts& counts) {
     const StrataGrid grid = strata_for(spp);
     for (int y = y0; y < y1; ++y) {
@@ -50,8 +50,8 @@ template <typename T>
 FrameResult render_with(const Scene& scene, const Camera& camera, const RenderSettings& settings,
                         const Effects& effects, ThreadPool* pool) {
     const auto start = std::chrono::steady_clock::now();
-    const FlatScene<T> flat = FlatScene<T>::build(scene, effects, settings.max_depth);
-    const Shader<T> shader(flat);
+    const FlatScene<T> flat = FlatScene<T>::build(
+        scene, plan_effects(scene, effects, settings.max_depth, settings.prune));
     const CameraRays<T> rays(camera);
     FrameResult result;
     result.image = Image(camera.width, camera.height);
@@ -65,18 +65,21 @@ FrameResult render_with(const Scene& scene, const Camera& camera, const RenderSe
         RayCounts c;
     };
     std::vector<PaddedCounts> counts(static_cast<size_t>(workers));
-    auto tile = [&](int t, int worker) {
-        const int x0 = (t % tiles_x) * kTileSize;
-        const int y0 = (t / tiles_x) * kTileSize;
-        render_tile(shader, rays, settings.samples_per_pixel, x0, y0,
-                    std::min(x0 + kTileSize, camera.width), std::min(y0 + kTileSize, camera.height),
-                    result.image, counts[size_t(worker)].c);
-    };
-    if (pool) {
-        pool->parallel_for(tiles_x * tiles_y, tile);
-    } else {
-        for (int t = 0; t < tiles_x * tiles_y; ++t) tile(t, 0);
-    }
+    with_shader(flat, [&](const auto& shader) {
+        auto tile = [&](int t, int worker) {
+            const int x0 = (t % tiles_x) * kTileSize;
+            const int y0 = (t / tiles_x) * kTileSize;
+            render_tile<T>(shader, rays, settings.samples_per_pixel, x0, y0,
+                           std::min(x0 + kTileSize, camera.width),
+                           std::min(y0 + kTileSize, camera.height), result.image,
+                           counts[size_t(worker)].c);
+        };
+        if (pool) {
+            pool->parallel_for(tiles_x * tiles_y, tile);
+        } else {
+            for (int t = 0; t < tiles_x * tiles_y; ++t) tile(t, 0);
+        }
+    });
     for (const auto& c : counts) result.counts += c.c;
     result.render_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -21,6 +21,9 @@ struct RenderSettings {
     int samples_per_pixel = 1;
     int max_depth = 5;  // reflection rays a primary ray may spawn in a chain
     Precision precision = Precision::dual;
+    // Debug: false simulates every effect asked for, even those the effect
+    // plan proves cannot change a pixel (render/effect_plan.h). Same bytes.
+    bool prune = true;
 };
 
 // The effects of the report's shading (SPEC section 4).

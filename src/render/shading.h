@@ -8,6 +8,9 @@
 // Colours stay unclamped here; the pixel clamps (render/render.cpp).
 // Glazing adds reflectivity times the next colour, so the recursion of the
 // report is a loop with a running weight.
+// F (ShaderFeature bits) fixes at compile time whether shadow rays, the
+// specular term and glazing exist at all; with_shader picks the variant the
+// frame's effect plan calls for.
 #pragma once
 
 #include <cmath>
@@ -19,10 +22,14 @@
 
 namespace fh {
 
-template <typename T>
+template <typename T, unsigned F>
 class Shader {
 public:
-    explicit Shader(const FlatScene<T>& scene) : scene_(scene), fx_(scene.plan.effects) {}
+    static constexpr bool kShadowRays = (F & kShadows) != 0;
+    static constexpr bool kSpecularTerm = (F & kSpecular) != 0;
+    static constexpr bool kReflections = (F & kGlazing) != 0;
+
+    explicit Shader(const FlatScene<T>& scene) : scene_(scene) {}
 
     Color<T> trace(Ray<T> ray, RayCounts& counts) const {
         Color<T> total(0);
@@ -32,6 +39,7 @@ public:
             if (!hit.found()) return total + weight * background(ray.direction);
             const SurfacePoint<T> sp = scene_.surface(ray, hit);
             total += weight * shade_point(sp, -ray.direction, counts);
+            if constexpr (!kReflections) return total;
             const Material<T>& m = scene_.materials[sp.material];
             if (!m.glazed || depth >= scene_.plan.max_depth) return total;
             weight *= m.reflectivity;
@@ -50,7 +58,7 @@ public:
             const Vec3<T> to_light = scene_.directional_lights[l].to_light();
             const T n_dot_l = glm::dot(sp.normal, to_light);
             if (n_dot_l <= T(0)) continue;  // faces away: no diffuse, no specular
-            if (fx_.shadows) {
+            if constexpr (kShadowRays) {
                 ++counts.shadow;
                 if (scene_.occluded({shadow_origin, to_light}, kInfinity<T>)) continue;
             }
@@ -62,7 +70,7 @@ public:
             if (r.intensity <= T(0)) continue;
             const T n_dot_l = glm::dot(sp.normal, r.to_light);
             if (n_dot_l <= T(0)) continue;
-            if (fx_.shadows) {
+            if constexpr (kShadowRays) {
                 ++counts.shadow;
                 // Blockers count only between the point and the light.
                 if (scene_.occluded({shadow_origin, r.to_light}, r.distance)) continue;
@@ -78,7 +86,7 @@ private:
     Color<T> direct(const LightTerms<T>& terms, const Material<T>& m, const Vec3<T>& n,
                     const Vec3<T>& to_light, const Vec3<T>& view, T n_dot_l, T intensity) const {
         Color<T> c = n_dot_l * terms.diffuse;
-        if (fx_.specular) {
+        if constexpr (kSpecularTerm) {
             const Vec3<T> h = glm::normalize(to_light + view);
             const T n_dot_h = std::max(T(0), glm::dot(n, h));
             c += std::pow(n_dot_h, m.phong_exponent) * terms.specular;
@@ -91,7 +99,21 @@ private:
     }
 
     const FlatScene<T>& scene_;
-    Effects fx_;
 };
+
+// Calls fn(shader) with the shader variant for the scene's effect plan.
+template <typename T, typename Fn>
+decltype(auto) with_shader(const FlatScene<T>& scene, Fn&& fn) {
+    switch (shader_features(scene.plan)) {
+    case 0: return fn(Shader<T, 0>(scene));
+    case 1: return fn(Shader<T, 1>(scene));
+    case 2: return fn(Shader<T, 2>(scene));
+    case 3: return fn(Shader<T, 3>(scene));
+    case 4: return fn(Shader<T, 4>(scene));
+    case 5: return fn(Shader<T, 5>(scene));
+    case 6: return fn(Shader<T, 6>(scene));
+    default: return fn(Shader<T, 7>(scene));
+    }
+}
 
 }  // namespace fh

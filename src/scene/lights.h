@@ -13,6 +13,7 @@ struct AmbientLight {
     std::string name;
     Color<T> color{0};
     T intensity = 0;
+    bool on = true;  // a movie's `lights:` switches the others off
 };
 
 template <typename T>
@@ -21,6 +22,7 @@ struct DirectionalLight {
     Color<T> color{0};
     T intensity = 0;
     Vec3<T> direction{0, 0, -1};  // unit; the way the light travels
+    bool on = true;
 
     Vec3<T> to_light() const { return -direction; }
 };

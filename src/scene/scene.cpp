@@ -7,9 +7,7 @@ namespace fh {
 namespace {
 template <typename Light>
 void keep(std::vector<Light>& lights, const std::vector<std::string>& names) {
-    std::erase_if(lights, [&](const Light& l) {
-        return std::find(names.begin(), names.end(), l.name) == names.end();
-    });
+    for (Light& l : lights) l.on = std::find(names.begin(), names.end(), l.name) != names.end();
 }
 }  // namespace
 

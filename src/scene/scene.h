@@ -38,7 +38,9 @@ struct Scene {
     }
 };
 
-// Keeps only the named lights switched on (a movie's `lights:` list).
+// Switches on the named lights and off all others (a movie's `lights:` list).
+// Lights that are off stay in the scene, so a render that does not prune
+// effects (RenderSettings::prune) can still simulate them, at zero weight.
 void keep_only_lights(Scene& scene, const std::vector<std::string>& names);
 
 }  // namespace fh

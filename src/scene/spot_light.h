@@ -28,6 +28,8 @@ struct SpotLight {
     Vec3<T> position{0};
     Vec3<T> axis{0, 0, -1};  // unit; the cone's axis, pointing away from the light
     T max_angle = T(2 * 3.14159265358979323846);  // radians
+    bool on = true;
+    bool cone_test = true;  // false when max_angle >= pi: every theta is inside
 
     SpotRadiance<T> radiance_at(const Vec3<T>& p) const {
         SpotRadiance<T> r;
@@ -40,7 +42,7 @@ struct SpotLight {
         // Rounding can push the cosine just past +-1; acos would return NaN.
         const T cos_theta = std::clamp(-glm::dot(r.to_light, axis), T(-1), T(1));
         const T theta = std::acos(cos_theta);
-        if (theta > max_angle) return r;
+        if (cone_test && theta > max_angle) return r;
         r.intensity = intensity * std::max(T(0), T(1) - theta / max_angle) / d2;
         return r;
     }

@@ -108,7 +108,7 @@ TEST(RenderCli, InfoDescribesAMovie) {
     const auto r = run_firsthit("info " + source_path("animations/movie2.yaml"));
     ASSERT_EQ(r.status, 0) << r.err;
     for (const char* line : {"kind: movie\n", "frames: 300\n", "fps: 30\n", "camera: orthographic\n",
-                             "lights: ambient directional\n"})
+                             "lights: ambient directional spot(off)\n"})
         EXPECT_NE(r.out.find(line), std::string::npos) << line << " in\n" << r.out;
 }
 

@@ -54,9 +54,13 @@ TEST(MovieLoader, LoadsTheReportMovies) {
     EXPECT_EQ(m1.camera.name, "perspective");
     EXPECT_DOUBLE_EQ(m1.fps, 30);
     EXPECT_DOUBLE_EQ(m1.seconds, 10);
-    EXPECT_EQ(m1.scene.ambient_lights.size(), 1u);
-    EXPECT_TRUE(m1.scene.directional_lights.empty());
-    EXPECT_EQ(m1.scene.spot_lights.size(), 1u);
+    // Lights that are not listed stay in the scene, switched off.
+    ASSERT_EQ(m1.scene.ambient_lights.size(), 1u);
+    ASSERT_EQ(m1.scene.directional_lights.size(), 1u);
+    ASSERT_EQ(m1.scene.spot_lights.size(), 1u);
+    EXPECT_TRUE(m1.scene.ambient_lights[0].on);
+    EXPECT_FALSE(m1.scene.directional_lights[0].on);
+    EXPECT_TRUE(m1.scene.spot_lights[0].on);
     ASSERT_TRUE(m1.view_point && std::holds_alternative<Orbit>(*m1.view_point));
     const Orbit& orbit = std::get<Orbit>(*m1.view_point);
     EXPECT_EQ(orbit.center, dvec3(-10, -10, 16));
@@ -69,8 +73,8 @@ TEST(MovieLoader, LoadsTheReportMovies) {
 
     const Movie m2 = load_movie(dir + "movie2.yaml");
     EXPECT_EQ(m2.camera.name, "orthographic");
-    EXPECT_EQ(m2.scene.directional_lights.size(), 1u);
-    EXPECT_TRUE(m2.scene.spot_lights.empty());
+    EXPECT_TRUE(m2.scene.directional_lights[0].on);
+    EXPECT_FALSE(m2.scene.spot_lights[0].on);
     EXPECT_EQ(std::get<Orbit>(*m2.view_point).center, dvec3(-10, -40, 26));
 }
 
@@ -108,8 +112,8 @@ TEST(MovieLoader, CameraDefaultsToTheFirst) {
     EXPECT_EQ(m.camera.name, "persp");
     EXPECT_DOUBLE_EQ(m.fps, 24);
     EXPECT_DOUBLE_EQ(m.seconds, 0.5);
-    EXPECT_TRUE(m.scene.ambient_lights.empty());
-    EXPECT_TRUE(m.scene.spot_lights.empty());
+    for (const auto& l : m.scene.ambient_lights) EXPECT_FALSE(l.on);
+    for (const auto& l : m.scene.spot_lights) EXPECT_FALSE(l.on);
 }
 
 TEST(MovieLoader, KeyframesSortedWithInterpolation) {

@@ -44,11 +44,16 @@ Effects only(bool ambient, bool diffuse, bool specular) {
     return e;
 }
 
+// The colour of one ray, through the shader variant the effect plan picks.
+Color<double> trace(const Scene& s, const Effects& fx, int depth, const Ray<double>& ray,
+                    RayCounts& counts) {
+    const auto flat = FlatScene<double>::build(s, plan_effects(s, fx, depth));
+    return with_shader(flat, [&](const auto& shader) { return shader.trace(ray, counts); });
+}
+
 Color<double> shade_from_above(const Scene& s, const Effects& fx, RayCounts* counts = nullptr) {
-    const auto flat = FlatScene<double>::build(s, fx, 5);
-    const Shader<double> shader(flat);
     RayCounts local;
-    return shader.trace({{0, 0, 10}, {0, 0, -1}}, counts ? *counts : local);
+    return trace(s, fx, 5, {{0, 0, 10}, {0, 0, -1}}, counts ? *counts : local);
 }
 
 void expect_color(const Color<double>& c, double r, double g, double b, double tol) {
@@ -94,9 +99,9 @@ TEST(Shading, GlazingAddsTheReflectedBackground) {
                  1e-12);
     EXPECT_EQ(counts.reflection, 1u);
     // Depth 0: no reflection ray.
-    const auto flat = FlatScene<double>::build(plane_scene(), fx, 0);
     RayCounts none;
-    expect_color(Shader<double>(flat).trace({{0, 0, 10}, {0, 0, -1}}, none), 6.63, 6.63, 6.63, 1e-12);
+    expect_color(trace(plane_scene(), fx, 0, {{0, 0, 10}, {0, 0, -1}}, none), 6.63, 6.63, 6.63,
+                 1e-12);
     EXPECT_EQ(none.reflection, 0u);
 }
 
@@ -113,9 +118,8 @@ TEST(Shading, MissGivesTheSunset) {
     expect_color(background(dvec3(0, 0, 1)), 255, 255, 0, 0);
     expect_color(background(dvec3(0, 0, -1)), 255, 0, 0, 0);
     expect_color(background(dvec3(1, 0, 0)), 255, 127.5, 0, 0);
-    const auto flat = FlatScene<double>::build(Scene{}, Effects{}, 5);
     RayCounts counts;
-    expect_color(Shader<double>(flat).trace({{0, 0, 0}, {0, 0, 1}}, counts), 255, 255, 0, 0);
+    expect_color(trace(Scene{}, Effects{}, 5, {{0, 0, 0}, {0, 0, 1}}, counts), 255, 255, 0, 0);
 }
 
 }  // namespace
