@@ -6,7 +6,8 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libyaml-cpp-dev
-          googletest libgtest-dev ffmpeg)
+          googletest libgtest-dev libbenchmark-dev ffmpeg
+          clang libclang-rt-14-dev)  # clang, libclang-rt: the fuzzers (scripts/fuzz.sh)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -26,11 +26,13 @@ struct Plane {
     T distance;
     int material;
 
-    T intersect(const Ray<T>& ray, T t_min, T t_max) const {
+    // Branch-free: with a (nearly) parallel ray the division may give inf or
+    // NaN, which the mask discards.
+    FH_HOT_INLINE T intersect(const Ray<T>& ray, T t_min, T t_max) const {
         const T denom = glm::dot(normal, ray.direction);
-        if (std::abs(denom) < ParallelLimit<T>::value) return kInfinity<T>;
         const T t = (distance - glm::dot(normal, ray.origin)) / denom;
-        return (t > t_min && t < t_max) ? t : kInfinity<T>;
+        const bool crosses = std::abs(denom) >= ParallelLimit<T>::value;
+        return (crosses & (t > t_min) & (t < t_max)) ? t : kInfinity<T>;
     }
 
     Vec3<T> normal_at(const Vec3<T>&) const { return normal; }

@@ -7,6 +7,9 @@
 // (Ray Tracing Gems, ch. 7). Requires a unit direction.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/hit.h"
 #include "core/ray.h"
 
@@ -18,23 +21,25 @@ struct Sphere {
     T radius;
     int material;
 
-    // Nearest t in (t_min, t_max), or infinity.
-    T intersect(const Ray<T>& ray, T t_min, T t_max) const {
+    // Nearest t in (t_min, t_max), or infinity. Branch-free, so a loop of it
+    // over a batch of rays vectorises (render/batch_intersect.h).
+    FH_HOT_INLINE T intersect(const Ray<T>& ray, T t_min, T t_max) const {
         const Vec3<T> f = ray.origin - center;
         const T b = -glm::dot(f, ray.direction);  // t of the closest approach
         const Vec3<T> closest = f + b * ray.direction;
         const T r2 = radius * radius;
         const T disc = r2 - glm::dot(closest, closest);
-        if (disc < T(0)) return kInfinity<T>;
         const T c = glm::dot(f, f) - r2;
-        const T q = b + std::copysign(std::sqrt(disc), b);
-        // t0 * t1 = c and t0 + t1 = 2b; q is the root of larger magnitude.
-        T t0 = q == T(0) ? T(0) : c / q;
-        T t1 = q;
-        if (t0 > t1) std::swap(t0, t1);
-        if (t0 > t_min && t0 < t_max) return t0;
-        if (t1 > t_min && t1 < t_max) return t1;
-        return kInfinity<T>;
+        // q is the root of larger magnitude; the other is c / q (t0 t1 = c).
+        // q == 0 only for a ray starting at a tangent point: c / q is then
+        // NaN, every comparison below fails, and the ray misses.
+        const T q = b + std::copysign(std::sqrt(std::max(disc, T(0))), b);
+        const T t0 = c / q;
+        const T near = std::min(t0, q);
+        const T far = std::max(t0, q);
+        const T t = near > t_min ? near : far;
+        // & rather than &&: no branches, so loops over it vectorise.
+        return ((disc >= T(0)) & (t > t_min) & (t < t_max)) ? t : kInfinity<T>;
     }
 
     Vec3<T> normal_at(const Vec3<T>& p) const { return glm::normalize(p - center); }

@@ -24,21 +24,20 @@ struct Triangle {
         return tri;
     }
 
-    T intersect(const Ray<T>& ray, T t_min, T t_max) const {
+    // Branch-free Moller-Trumbore. det == 0: the ray lies in the triangle's
+    // plane, or the triangle has no area; there is no single crossing point
+    // (the divisions then give inf or NaN, which the mask discards).
+    FH_HOT_INLINE T intersect(const Ray<T>& ray, T t_min, T t_max) const {
         const Vec3<T> p = glm::cross(ray.direction, e2);
         const T det = glm::dot(e1, p);
-        // det == 0: the ray lies in the triangle's plane, or the triangle has no
-        // area; either way there is no single crossing point.
-        if (det == T(0) || !std::isfinite(det)) return kInfinity<T>;
         const T inv_det = T(1) / det;
         const Vec3<T> s = ray.origin - v0;
         const T u = glm::dot(s, p) * inv_det;
-        if (u < T(0) || u > T(1)) return kInfinity<T>;
         const Vec3<T> q = glm::cross(s, e1);
         const T v = glm::dot(ray.direction, q) * inv_det;
-        if (v < T(0) || u + v > T(1)) return kInfinity<T>;
         const T t = glm::dot(e2, q) * inv_det;
-        return (t > t_min && t < t_max) ? t : kInfinity<T>;
+        const bool inside = (det != T(0)) & (u >= T(0)) & (v >= T(0)) & (u + v <= T(1));
+        return (inside & (t > t_min) & (t < t_max)) ? t : kInfinity<T>;
     }
 
     Vec3<T> normal_at(const Vec3<T>&) const { return normal; }

@@ -1,5 +1,7 @@
 #include "render/flat_scene.h"
 
+#include <algorithm>
+
 namespace fh {
 
 namespace {
@@ -7,8 +9,8 @@ namespace {
 template <typename T>
 Material<T> cast(const Material<double>& m) {
     return {Color<T>(m.ambient_color), Color<T>(m.diffuse_color), Color<T>(m.specular_color),
-            T(m.ambient), T(m.diffuse), T(m.specular), T(m.phong_exponent), m.glazed,
-            T(m.reflectivity)};
+            T(m.ambient), T(m.diffuse), T(m.specular), T(m.phong_exponent),
+            whole_exponent(m.phong_exponent), m.glazed, T(m.reflectivity)};
 }
 
 template <typename T>
@@ -18,6 +20,38 @@ LightTerms<T> terms(const Material<double>& m, const dvec3& light_color, double 
     if (fx.diffuse) t.diffuse = Color<T>(intensity * m.diffuse * light_color * m.diffuse_color);
     if (fx.specular) t.specular = Color<T>(intensity * m.specular * light_color * m.specular_color);
     return t;
+}
+
+// Bounding spheres of consecutive runs of the (non-degenerate) triangles,
+// computed in double and padded by a relative 1e-4 so that no rounding in
+// the tracer's precision can cull a ray that hits a triangle.
+template <typename T>
+std::vector<TriangleCluster<T>> clusters_of(const std::vector<Triangle<double>>& all, int kept) {
+    std::vector<const Triangle<double>*> tris;
+    for (const auto& t : all)
+        if (t.normal != dvec3(0)) tris.push_back(&t);
+    std::vector<TriangleCluster<T>> out;
+    for (int first = 0; first < kept; first += kClusterSize) {
+        const int count = std::min(kClusterSize, kept - first);
+        dvec3 lo(kInfinity<double>), hi(-kInfinity<double>);
+        auto corners = [&](const Triangle<double>& t, auto&& fn) {
+            fn(t.v0);
+            fn(t.v0 + t.e1);
+            fn(t.v0 + t.e2);
+        };
+        for (int i = first; i < first + count; ++i)
+            corners(*tris[size_t(i)], [&](const dvec3& p) {
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            });
+        const dvec3 center = (lo + hi) * 0.5;
+        double r = 0;
+        for (int i = first; i < first + count; ++i)
+            corners(*tris[size_t(i)], [&](const dvec3& p) { r = std::max(r, glm::length(p - center)); });
+        r = r * (1 + 1e-4) + 1e-4 * max_abs_component(center) + 1e-30;
+        out.push_back({Sphere<T>{Vec3<T>(center), T(r), -1}, first, count});
+    }
+    return out;
 }
 
 }  // namespace
@@ -38,6 +72,7 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
                                t.material});
     }
     for (const auto& m : scene.materials) f.materials.push_back(cast<T>(m));
+    f.clusters = clusters_of<T>(scene.triangles, int(f.triangles.size()));
 
     // A light that is off but simulated anyway (plan not pruned) shines with 0.
     auto intensity = [](const auto& l) { return l.on ? l.intensity : 0.0; };

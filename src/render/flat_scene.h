@@ -20,11 +20,22 @@ struct LightTerms {
     Color<T> specular{0};
 };
 
+// Up to kClusterSize consecutive triangles and a sphere that holds them all.
+// A batch of rays none of which meets the sphere skips the triangles: a
+// 16 x 16 tile mostly does not see the report's tetrahedron at all.
+template <typename T>
+struct TriangleCluster {
+    Sphere<T> bound;  // radius padded so rounding never culls a real hit
+    int first, count;
+};
+inline constexpr int kClusterSize = 16;
+
 template <typename T>
 struct FlatScene {
     std::vector<Sphere<T>> spheres;
     std::vector<Plane<T>> planes;
     std::vector<Triangle<T>> triangles;
+    std::vector<TriangleCluster<T>> clusters;  // covering triangles in order
     std::vector<Material<T>> materials;
     std::vector<Color<T>> ambient_terms;  // per material
     std::vector<DirectionalLight<T>> directional_lights;
@@ -65,14 +76,23 @@ struct FlatScene {
         return false;
     }
 
+    // The hit of a batch intersection: prim numbers spheres, then planes,
+    // then triangles (render/batch_intersect.h).
+    Hit<T> hit_of(T t, int prim) const {
+        const int ns = int(spheres.size()), np = int(planes.size());
+        if (prim < ns) return {t, ShapeKind::sphere, prim};
+        if (prim < ns + np) return {t, ShapeKind::plane, prim - ns};
+        return {t, ShapeKind::triangle, prim - ns - np};
+    }
+
     // Point, normal facing the ray, and material of a hit.
     SurfacePoint<T> surface(const Ray<T>& ray, const Hit<T>& hit) const {
         SurfacePoint<T> sp;
         switch (hit.kind) {
         case ShapeKind::sphere: {
             const Sphere<T>& s = spheres[hit.index];
-            sp.point = s.point_at(ray, hit.t);
-            sp.normal = s.normal_at(sp.point);
+            sp.normal = s.normal_at(ray.at(hit.t));
+            sp.point = s.center + s.radius * sp.normal;  // Sphere::point_at, normal kept
             sp.material = s.material;
             break;
         }

@@ -14,7 +14,7 @@ namespace {
 // One sample: clamp each sample on its own (SPEC section 4); a non-finite one
 // is counted and contributes black.
 template <typename T>
-Color<T> clamped(Color<T> c, RayCounts& counts) {
+inline Color<T> clamped(Color<T> c, RayCounts& counts) {
     if (!is_finite(c)) {
         ++counts.nonfinite_samples;
         return Color<T>(0);
@@ -24,20 +24,41 @@ Color<T> clamped(Color<T> c, RayCounts& counts) {
 
 inline std::uint8_t to_byte(double v) { return std::uint8_t(std::floor(v + 0.5)); }
 
+// A tile's samples go through the shader in batches, in pixel order; each
+// sample is clamped on its own and the pixel is their mean, rounded.
 template <typename T, typename S>
-void render_tile(const S& shader, const CameraRays<T>& rays, int spp, int x0, int y0,
-                 int x1, int y1, Image& image, RayCounts& counts) {
+void render_tile(const S& shader, const CameraRays<T>& rays, int spp, int x0, int y0, int x1,
+                 int y1, Image& image, RayCounts& counts) {
     const StrataGrid grid = strata_for(spp);
+    constexpr int kBatch = RayBatch<T>::kCapacity;
+    Color<double> sum[kTileSize * kTileSize];
+    RayBatch<T> batch;
+    Color<T> colour[kBatch];
+    int pixel_of[kBatch];  // which pixel of the tile each ray of the batch samples
+    auto flush = [&] {
+        const int n = batch.size;
+        counts.primary += std::uint64_t(n);
+        shader.trace(batch, colour, counts);  // leaves batch holding its last wave
+        for (int i = 0; i < n; ++i) sum[pixel_of[i]] += Color<double>(clamped(colour[i], counts));
+        batch.size = 0;
+    };
+    int p = 0;
     for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; ++x) {
-            Color<double> sum(0);
+        for (int x = x0; x < x1; ++x, ++p) {
+            sum[p] = Color<double>(0);
             for (int s = 0; s < spp; ++s) {
                 const SampleOffset o = sample_offset(x, y, s, grid);
-                const Ray<T> ray = rays.generate(T(x + o.x), T(y + o.y));
-                ++counts.primary;
-                sum += Color<double>(clamped(shader.trace(ray, counts), counts));
+                pixel_of[batch.size] = p;
+                batch.push(rays.generate(T(x + o.x), T(y + o.y)));
+                if (batch.full()) flush();
             }
-            const Color<double> mean = sum / double(spp);
+        }
+    }
+    if (batch.size > 0) flush();
+    p = 0;
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x, ++p) {
+            const Color<double> mean = sum[p] / double(spp);
             std::uint8_t* px = image.pixel(x, y);
             px[0] = to_byte(mean.r);
             px[1] = to_byte(mean.g);

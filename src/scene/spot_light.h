@@ -37,8 +37,9 @@ struct SpotLight {
         const T d2 = glm::dot(delta, delta);
         // At the light's own position the direction is undefined: no light.
         if (!(d2 > T(0)) || !std::isfinite(d2)) return r;
-        r.distance = std::sqrt(d2);
-        r.to_light = delta / r.distance;
+        const T inv_distance = T(1) / std::sqrt(d2);
+        r.distance = d2 * inv_distance;
+        r.to_light = delta * inv_distance;
         // Rounding can push the cosine just past +-1; acos would return NaN.
         const T cos_theta = std::clamp(-glm::dot(r.to_light, axis), T(-1), T(1));
         const T theta = std::acos(cos_theta);
