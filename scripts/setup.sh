@@ -6,7 +6,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libyaml-cpp-dev
-          googletest libgtest-dev libbenchmark-dev ffmpeg
+          googletest libgtest-dev libbenchmark-dev ffmpeg gnuplot-nox
           clang libclang-rt-14-dev)  # clang, libclang-rt: the fuzzers (scripts/fuzz.sh)
 missing=()
 for p in "${packages[@]}"; do

@@ -13,11 +13,13 @@ int run_render(const Words& words);
 int run_bench(const Words& words);
 int run_frames(const Words& words);
 int run_info(const Words& words);
+int run_accuracy(const Words& words);
 
 extern const char* const kRenderHelp;
 extern const char* const kBenchHelp;
 extern const char* const kFramesHelp;
 extern const char* const kInfoHelp;
+extern const char* const kAccuracyHelp;
 
 // Prints the command's help if words ask for it; true if it did.
 bool wants_help(const Words& words, const char* help);

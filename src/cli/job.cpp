@@ -1,5 +1,6 @@
 #include "cli/job.h"
 
+#include <cstdlib>
 #include <iostream>
 
 #include "anim/movie.h"
@@ -10,7 +11,8 @@
 namespace fh {
 
 std::vector<FlagSpec> job_flags() {
-    return {{"--frame"}, {"--camera"}, {"--spp"}, {"--depth"}, {"--precision"}, {"--no-prune", false}};
+    return {{"--frame"}, {"--camera"}, {"--spp"}, {"--depth"}, {"--precision"}, {"--no-prune", false},
+            {"--adaptive", false}, {"--aa-threshold"}, {"--aa-samples"}};
 }
 
 void apply_quality_flags(const Args& args, RenderSettings& s) {
@@ -18,6 +20,16 @@ void apply_quality_flags(const Args& args, RenderSettings& s) {
         args.integer("--spp", s.samples_per_pixel, 1, Limits::max_samples_per_pixel);
     s.max_depth = args.integer("--depth", s.max_depth, 0, Limits::max_depth);
     s.prune = !args.has("--no-prune");
+    if (args.has("--adaptive")) s.adaptive = true;
+    s.adaptive_samples =
+        args.integer("--aa-samples", s.adaptive_samples, 1, Limits::max_samples_per_pixel);
+    if (const auto t = args.value("--aa-threshold")) {
+        char* end = nullptr;
+        const double v = std::strtod(t->c_str(), &end);
+        if (t->empty() || *end != '\0' || !(v >= 0 && v <= 255))
+            throw UsageError("--aa-threshold must be a number in [0, 255], got '" + *t + "'");
+        s.adaptive_threshold = v;
+    }
     if (const auto p = args.value("--precision")) {
         if (*p == "float") s.precision = Precision::single;
         else if (*p == "double") s.precision = Precision::dual;

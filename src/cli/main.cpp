@@ -17,6 +17,7 @@ usage:
   firsthit render  FILE [--frame N] [--camera NAME] [--spp N] [--depth N] [--threads N] [--stats] [-o OUT.png]
   firsthit frames  MOVIE [--out DIR] [--range A:B] [--shard K/N] [--resume] [--threads N]
   firsthit bench   FILE [--frame N] [--runs K] [--threads N] [--spp N] [--depth N]
+  firsthit accuracy FILE [--frame N] [--csv OUT.csv] [--plot OUT.png]
   firsthit info    FILE
   firsthit --help | --version
 
@@ -24,6 +25,7 @@ commands:
   render   render one frame of a scene or movie to PNG
   frames   render the frames of a movie to a folder of PNGs (on every core)
   bench    time one frame: median ms per frame and rays per second
+  accuracy what each accuracy knob costs: error against a reference vs time
   info     what a scene or movie file holds
 
 FILE is a scene file or a movie file (a movie names its scene); see
@@ -54,6 +56,7 @@ int dispatch(int argc, char** argv) {
     if (cmd == "frames") return run_frames(words);
     if (cmd == "bench") return run_bench(words);
     if (cmd == "info") return run_info(words);
+    if (cmd == "accuracy") return run_accuracy(words);
     throw UsageError("unknown command '" + cmd + "'; see 'firsthit --help'");
 }
 

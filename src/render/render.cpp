@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 
+#include "render/adaptive.h"
 #include "render/sampler.h"
 #include "render/shading.h"
 
@@ -24,17 +26,18 @@ inline Color<T> clamped(Color<T> c, RayCounts& counts) {
 
 inline std::uint8_t to_byte(double v) { return std::uint8_t(std::floor(v + 0.5)); }
 
-// A tile's samples go through the shader in batches, in pixel order; each
-// sample is clamped on its own and the pixel is their mean, rounded.
+// Renders a list of pixels (at most kTileSize^2), spp samples each, through
+// the shader in batches, in pixel order; each sample is clamped on its own
+// and the pixel is their mean, rounded.
 template <typename T, typename S>
-void render_tile(const S& shader, const CameraRays<T>& rays, int spp, int x0, int y0, int x1,
-                 int y1, Image& image, RayCounts& counts) {
+void render_pixels(const S& shader, const CameraRays<T>& rays, const PixelRef* pixels, int count,
+                   int spp, Image& image, RayCounts& counts) {
     const StrataGrid grid = strata_for(spp);
     constexpr int kBatch = RayBatch<T>::kCapacity;
     Color<double> sum[kTileSize * kTileSize];
     RayBatch<T> batch;
     Color<T> colour[kBatch];
-    int pixel_of[kBatch];  // which pixel of the tile each ray of the batch samples
+    int pixel_of[kBatch];  // which listed pixel each ray of the batch samples
     auto flush = [&] {
         const int n = batch.size;
         counts.primary += std::uint64_t(n);
@@ -42,29 +45,35 @@ void render_tile(const S& shader, const CameraRays<T>& rays, int spp, int x0, in
         for (int i = 0; i < n; ++i) sum[pixel_of[i]] += Color<double>(clamped(colour[i], counts));
         batch.size = 0;
     };
-    int p = 0;
-    for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; ++x, ++p) {
-            sum[p] = Color<double>(0);
-            for (int s = 0; s < spp; ++s) {
-                const SampleOffset o = sample_offset(x, y, s, grid);
-                pixel_of[batch.size] = p;
-                batch.push(rays.generate(T(x + o.x), T(y + o.y)));
-                if (batch.full()) flush();
-            }
+    for (int p = 0; p < count; ++p) {
+        sum[p] = Color<double>(0);
+        const int x = pixels[p].x, y = pixels[p].y;
+        for (int s = 0; s < spp; ++s) {
+            const SampleOffset o = sample_offset(x, y, s, grid);
+            pixel_of[batch.size] = p;
+            batch.push(rays.generate(T(x + o.x), T(y + o.y)));
+            if (batch.full()) flush();
         }
     }
     if (batch.size > 0) flush();
-    p = 0;
-    for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; ++x, ++p) {
-            const Color<double> mean = sum[p] / double(spp);
-            std::uint8_t* px = image.pixel(x, y);
-            px[0] = to_byte(mean.r);
-            px[1] = to_byte(mean.g);
-            px[2] = to_byte(mean.b);
-        }
+    for (int p = 0; p < count; ++p) {
+        const Color<double> mean = sum[p] / double(spp);
+        std::uint8_t* px = image.pixel(pixels[p].x, pixels[p].y);
+        px[0] = to_byte(mean.r);
+        px[1] = to_byte(mean.g);
+        px[2] = to_byte(mean.b);
     }
+}
+
+// The pixels of tile t, in row order.
+int tile_pixels(int t, int width, int height, PixelRef* out) {
+    const int tiles_x = (width + kTileSize - 1) / kTileSize;
+    const int x0 = (t % tiles_x) * kTileSize, y0 = (t / tiles_x) * kTileSize;
+    int n = 0;
+    for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
+        for (int x = x0; x < std::min(x0 + kTileSize, width); ++x)
+            out[n++] = {std::uint16_t(x), std::uint16_t(y)};
+    return n;
 }
 
 template <typename T>
@@ -78,28 +87,35 @@ FrameResult render_with(const Scene& scene, const Camera& camera, const RenderSe
     result.image = Image(camera.width, camera.height);
     result.plan = flat.plan;
 
-    const int tiles_x = (camera.width + kTileSize - 1) / kTileSize;
-    const int tiles_y = (camera.height + kTileSize - 1) / kTileSize;
-    const int workers = pool ? pool->size() : 1;
     // One counter block per worker, a cache line apart so they do not share one.
     struct alignas(64) PaddedCounts {
         RayCounts c;
     };
-    std::vector<PaddedCounts> counts(static_cast<size_t>(workers));
+    std::vector<PaddedCounts> counts(static_cast<size_t>(pool ? pool->size() : 1));
+    auto run = [&](int tasks, const std::function<void(int, int)>& fn) {
+        if (pool) pool->parallel_for(tasks, fn);
+        else for (int t = 0; t < tasks; ++t) fn(t, 0);
+    };
+    constexpr int kChunk = kTileSize * kTileSize;
     with_shader(flat, [&](const auto& shader) {
-        auto tile = [&](int t, int worker) {
-            const int x0 = (t % tiles_x) * kTileSize;
-            const int y0 = (t / tiles_x) * kTileSize;
-            render_tile<T>(shader, rays, settings.samples_per_pixel, x0, y0,
-                           std::min(x0 + kTileSize, camera.width),
-                           std::min(y0 + kTileSize, camera.height), result.image,
-                           counts[size_t(worker)].c);
-        };
-        if (pool) {
-            pool->parallel_for(tiles_x * tiles_y, tile);
-        } else {
-            for (int t = 0; t < tiles_x * tiles_y; ++t) tile(t, 0);
-        }
+        const int tiles = ((camera.width + kTileSize - 1) / kTileSize) *
+                          ((camera.height + kTileSize - 1) / kTileSize);
+        run(tiles, [&](int t, int worker) {
+            PixelRef pixels[kChunk];
+            const int n = tile_pixels(t, camera.width, camera.height, pixels);
+            render_pixels<T>(shader, rays, pixels, n, settings.samples_per_pixel, result.image,
+                             counts[size_t(worker)].c);
+        });
+        if (!settings.adaptive) return;
+        const std::vector<PixelRef> refine =
+            pixels_to_refine(result.image, settings.adaptive_threshold);
+        result.refined_pixels = refine.size();
+        const int chunks = int((refine.size() + kChunk - 1) / kChunk);
+        run(chunks, [&](int c, int worker) {
+            const int n = std::min(kChunk, int(refine.size()) - c * kChunk);
+            render_pixels<T>(shader, rays, refine.data() + c * kChunk, n,
+                             settings.adaptive_samples, result.image, counts[size_t(worker)].c);
+        });
     });
     for (const auto& c : counts) result.counts += c.c;
     result.render_ms =

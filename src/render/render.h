@@ -16,6 +16,7 @@ struct FrameResult {
     Image image;
     RayCounts counts;
     EffectPlan plan;
+    size_t refined_pixels = 0;  // adaptive anti-aliasing's second pass
     double render_ms = 0;
 };
 

@@ -21,6 +21,12 @@ struct RenderSettings {
     int samples_per_pixel = 1;
     int max_depth = 5;  // reflection rays a primary ray may spawn in a chain
     Precision precision = Precision::dual;
+    // Adaptive anti-aliasing (render/adaptive.h): after the first pass, pixels
+    // more than adaptive_threshold (0..255) from a neighbour get
+    // adaptive_samples stratified samples instead.
+    bool adaptive = false;
+    double adaptive_threshold = 8;
+    int adaptive_samples = 16;
     // Debug: false simulates every effect asked for, even those the effect
     // plan proves cannot change a pixel (render/effect_plan.h). Same bytes.
     bool prune = true;

@@ -1,0 +1,210 @@
+// firsthit accuracy FILE: what accuracy costs in time. Renders a reference
+// (double, 256 samples per pixel, depth 16, or deeper where 16 has not
+// converged), then sweeps each knob, and reports time, rays and error against
+// the reference per setting, as a CSV and a plot.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "cli/commands.h"
+#include "cli/job.h"
+#include "io/input_error.h"
+#include "render/image_compare.h"
+#include "render/render.h"
+
+namespace fh {
+
+const char* const kAccuracyHelp =
+    R"(usage: firsthit accuracy FILE [options]
+
+Measures what each accuracy knob costs: renders a reference (double precision,
+256 samples per pixel, glazing depth 16 - deeper if 16 has not converged),
+then sweeps samples per pixel 1..64 (uniform and adaptive), depth 0..8 and
+float vs double, and reports for each setting the median render time, the
+rays traced and the error against the reference (RMSE, PSNR, worst pixel).
+
+  --frame N / --camera NAME   the frame, as for render
+  --csv OUT.csv       write the table (default: print it on stdout)
+  --plot OUT.png      plot error against time, one curve per knob (gnuplot)
+  --runs K            timed runs per setting, median reported (default 3)
+  --threads N         worker threads (default: one per core)
+  --reference-spp N   samples per pixel of the reference (default 256)
+  --max-spp N         largest samples per pixel swept (default 64)
+  --aa-threshold X    adaptive anti-aliasing threshold, 0..255 (default 8)
+)";
+
+namespace {
+
+struct Row {
+    std::string setting;
+    RenderSettings settings;
+    double ms = 0;
+    std::uint64_t rays = 0;
+    size_t refined = 0;
+    ImageError error;     // against the reference
+    ImageError isolated;  // depth and precision rows: against a 1-sample reference
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
+}
+
+std::string number(double v) {
+    if (std::isinf(v)) return "inf";
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+}
+
+void write_csv(std::ostream& out, const std::vector<Row>& rows) {
+    out << "setting,spp,adaptive,depth,precision,ms,rays,rmse,psnr,max_error,refined_pixels,"
+           "isolated_rmse,isolated_psnr\n";
+    for (const Row& r : rows) {
+        const RenderSettings& s = r.settings;
+        out << r.setting << "," << (s.adaptive ? s.adaptive_samples : s.samples_per_pixel) << ","
+            << (s.adaptive ? 1 : 0) << "," << s.max_depth << "," << precision_name(s.precision)
+            << "," << number(r.ms) << "," << r.rays << "," << number(r.error.rmse) << ","
+            << number(r.error.psnr) << "," << r.error.max_error << "," << r.refined << ","
+            << number(r.isolated.rmse) << "," << number(r.isolated.psnr) << "\n";
+    }
+}
+
+// Error (PSNR, capped for identical images) against time, one curve per knob.
+void plot(const std::string& csv, const std::string& png, const std::string& title) {
+    std::FILE* gp = popen("gnuplot 2>&1", "w");
+    if (!gp) throw std::runtime_error("cannot run gnuplot; install it with: apt-get install gnuplot-nox");
+    std::fprintf(gp, R"(set terminal pngcairo size 1280,560 font ",11"
+set output '%s'
+set datafile separator ','
+set multiplot layout 1,2 title "%s"
+set xlabel 'median render time (ms, log scale)'
+set logscale x
+set grid
+set key bottom right
+psnr(c) = (strcol(c) eq 'inf') ? 100 : column(c)
+set title 'anti-aliasing: error against the reference (256 samples)'
+set ylabel 'PSNR (dB, higher is better)'
+plot '%s' using (strcol(1) eq 'spp' ? $6 : 1/0):(psnr(9)) with linespoints lw 2 pt 7 title 'samples per pixel (uniform)', \
+     '' using (strcol(1) eq 'spp' ? $6 : 1/0):(psnr(9)):2 with labels offset 0,1 notitle, \
+     '' using (strcol(1) eq 'adaptive' ? $6 : 1/0):(psnr(9)) with linespoints lw 2 pt 5 title 'adaptive (max samples)', \
+     '' using (strcol(1) eq 'adaptive' ? $6 : 1/0):(psnr(9)):2 with labels offset 0,-1 notitle
+set title 'depth and precision: error against a 1-sample reference (PSNR 100 = identical)'
+set yrange [*:105]
+plot '%s' using (strcol(1) eq 'depth' ? $6 : 1/0):(psnr(13)) with linespoints lw 2 pt 9 title 'glazing depth 0..8', \
+     '' using (strcol(1) eq 'depth' ? $6 : 1/0):(psnr(13)):4 with labels offset 0,1 notitle, \
+     '' using (strcol(1) eq 'precision' ? $6 : 1/0):(psnr(13)) with points pt 13 ps 2 title 'float vs double (depth as the file)', \
+     '' using (strcol(1) eq 'precision' ? $6 : 1/0):(psnr(13)):5 with labels offset 3,0 notitle
+unset multiplot
+)",
+                 png.c_str(), title.c_str(), csv.c_str(), csv.c_str());
+    if (pclose(gp) != 0)
+        throw std::runtime_error("gnuplot failed to plot " + png +
+                                 " (is it installed? apt-get install gnuplot-nox)");
+}
+
+}  // namespace
+
+int run_accuracy(const Words& words) {
+    if (wants_help(words, kAccuracyHelp)) return 0;
+    auto spec = job_flags();
+    spec.insert(spec.end(), {{"--csv"}, {"--plot"}, {"--runs"}, {"--threads"}, {"--reference-spp"},
+                             {"--max-spp"}});
+    const Args args = Args::parse("accuracy", words, spec);
+    const RenderJob job = load_job(args);
+    const int runs = args.integer("--runs", 3, 1, 1000);
+    const int ref_spp = args.integer("--reference-spp", 256, 1, Limits::max_samples_per_pixel);
+    const int max_spp = args.integer("--max-spp", 64, 1, Limits::max_samples_per_pixel);
+    ThreadPool pool(args.integer("--threads", 0, 0, 1024));
+    auto render = [&](const RenderSettings& s) {
+        return render_frame(job.scene, job.camera, s, job.effects, &pool);
+    };
+
+    // The reference: deep enough that one more level of glazing changes nothing.
+    RenderSettings ref = job.settings;
+    ref.precision = Precision::dual;
+    ref.adaptive = false;
+    ref.samples_per_pixel = 1;
+    ref.max_depth = 16;
+    for (; ref.max_depth < Limits::max_depth; ref.max_depth *= 2) {
+        RenderSettings deeper = ref;
+        deeper.max_depth = std::min(Limits::max_depth, ref.max_depth * 2);
+        if (render(ref).image.rgb == render(deeper).image.rgb) break;
+    }
+    // Depth and precision are also measured against this one sample
+    // reference, which isolates their own error from the aliasing of one sample.
+    const FrameResult one_sample = render(ref);
+    ref.samples_per_pixel = ref_spp;
+    std::cerr << "accuracy: reference " << ref_spp << " samples per pixel, depth " << ref.max_depth
+              << ", double\n";
+    const FrameResult reference = render(ref);
+
+    std::vector<Row> rows;
+    const ImageError exact = compare_images(reference.image, reference.image);
+    rows.push_back({"reference", ref, reference.render_ms, reference.counts.total(), 0, exact, exact});
+    const bool tty = isatty(STDERR_FILENO);
+    auto measure = [&](const std::string& name, const RenderSettings& s) {
+        std::vector<double> ms;
+        FrameResult r;
+        for (int i = 0; i < runs; ++i) {
+            r = render(s);
+            ms.push_back(r.render_ms);
+        }
+        const ImageError error = compare_images(r.image, reference.image);
+        const bool sampling = name == "spp" || name == "adaptive";
+        rows.push_back({name, s, median(ms), r.counts.total(), r.refined_pixels, error,
+                        sampling ? error : compare_images(r.image, one_sample.image)});
+        if (tty) std::cerr << "\raccuracy: " << rows.size() - 1 << " settings measured" << std::flush;
+    };
+    RenderSettings base = job.settings;
+    base.adaptive = false;
+    base.precision = Precision::dual;
+    base.samples_per_pixel = 1;
+    for (int spp = 1; spp <= max_spp; spp *= 2) {
+        RenderSettings s = base;
+        s.samples_per_pixel = spp;
+        measure("spp", s);
+    }
+    for (int spp = 2; spp <= max_spp; spp *= 2) {
+        RenderSettings s = base;
+        s.adaptive = true;
+        s.adaptive_samples = spp;
+        measure("adaptive", s);
+    }
+    for (int depth = 0; depth <= 8; ++depth) {
+        RenderSettings s = base;
+        s.max_depth = depth;
+        measure("depth", s);
+    }
+    for (Precision p : {Precision::single, Precision::dual}) {
+        RenderSettings s = base;
+        s.precision = p;
+        measure("precision", s);
+    }
+    if (tty) std::cerr << "\n";
+
+    const auto csv = args.value("--csv");
+    if (csv) {
+        std::ofstream out(*csv + ".tmp");
+        write_csv(out, rows);
+        out.close();
+        if (!out || std::rename((*csv + ".tmp").c_str(), csv->c_str()) != 0)
+            throw std::runtime_error("cannot write " + *csv);
+    } else {
+        write_csv(std::cout, rows);
+    }
+    if (const auto png = args.value("--plot")) {
+        if (!csv) throw UsageError("--plot needs --csv (gnuplot reads the table from it)");
+        std::string title = job.file + (job.frame >= 0 ? " frame " + std::to_string(job.frame) : "");
+        plot(*csv, *png, "What accuracy costs: " + title);
+    }
+    return 0;
+}
+
+}  // namespace fh
