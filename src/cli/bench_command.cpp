@@ -19,7 +19,8 @@ the rays traced by kind.
   --camera NAME    scene files: the camera (default: the first listed)
   --runs K         timed runs (default 7)
   --threads N      worker threads (default: one per core)
-  --spp N, --depth N, --precision P, --no-prune   as for render
+  --spp N, --depth N, --precision P, --adaptive, --aa-threshold X,
+  --aa-samples N, --no-prune   as for render
 )";
 
 int run_bench(const Words& words) {

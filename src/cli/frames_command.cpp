@@ -2,10 +2,13 @@
 // to DIR/frame_NNNN.png. Frames are spread over the pool one per worker: each
 // worker renders its frame on its own and encodes the PNG, so PNG encoding
 // runs beside rendering instead of stalling it.
+#include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <mutex>
+#include <shared_mutex>
 
 #include <unistd.h>
 
@@ -19,6 +22,7 @@
 #include "io/input_error.h"
 #include "io/movie_loader.h"
 #include "io/png_writer.h"
+#include "io/scene_loader.h"
 
 namespace fh {
 
@@ -35,54 +39,98 @@ second and the time left.
   --range A:B      only frames A .. B-1
   --shard K/N      only frames i with i mod N == K (0 <= K < N), e.g. one task
                    of a cluster job array; combines with --range
-  --resume         skip frames whose file is already complete
+  --shard auto     the shard from the cluster scheduler's environment: a
+                   Slurm job array (task SLURM_ARRAY_TASK_ID minus
+                   SLURM_ARRAY_TASK_MIN, of SLURM_ARRAY_TASK_COUNT) or a
+                   Kubernetes Indexed Job (JOB_COMPLETION_INDEX, of --shards N)
+  --shards N       the shard count for --shard auto in a Kubernetes Indexed
+                   Job (the Job's completions)
+  --resume         skip frames whose file is already complete (after an
+                   interrupted or killed run: renders exactly the missing ones)
   --threads N      worker threads (default: one per core)
-  --spp N, --depth N, --precision P, --no-prune   as for render
+  --spp N, --depth N, --precision P, --adaptive, --aa-threshold X,
+  --aa-samples N, --no-prune   as for render
   --stats          print the rays traced, as key: value lines on stdout
   --quiet          no progress line
+
+SIGINT or SIGTERM (Ctrl-C): no new frames are started, the frames in flight
+are finished if they take less than half a second more (else abandoned),
+and the run exits with 128 + the signal's number; run it again with --resume.
+A killed run leaves only whole frames; temporaries (frame_NNNN.png.tmp-...)
+of dead runs are removed by the next run.
 )";
+
+namespace {
+// How long frames in flight may take after SIGINT/SIGTERM before the run
+// abandons them and exits.
+constexpr std::chrono::milliseconds kInterruptGrace{500};
+}  // namespace
 
 int run_frames(const Words& words) {
     if (wants_help(words, kFramesHelp)) return 0;
     const Args args = Args::parse(
         "frames", words,
-        {{"--out"}, {"--range"}, {"--shard"}, {"--resume", false}, {"--threads"}, {"--spp"},
-         {"--depth"}, {"--precision"}, {"--no-prune", false}, {"--stats", false}, {"--quiet", false}});
+        {{"--out"}, {"--range"}, {"--shard"}, {"--shards"}, {"--resume", false}, {"--threads"}, {"--spp"},
+         {"--depth"}, {"--precision"}, {"--no-prune", false}, {"--adaptive", false}, {"--aa-threshold"},
+         {"--aa-samples"}, {"--stats", false}, {"--quiet", false}});
     if (args.positional().size() != 1)
         throw UsageError("expected one MOVIE file, got " + std::to_string(args.positional().size()));
     const std::string file = args.positional()[0];
-    if (!is_movie_file(file))
+    if (!is_movie_file(file)) {
+        // Unreadable, not YAML, or a scene with mistakes: say what is wrong
+        // with it, at its position, rather than only that it is no movie.
+        load_scene(file);
         throw UsageError(file + " is not a movie file (a movie file has a 'scene:' key)");
+    }
     Movie movie = load_movie(file);
     const int n = movie.frame_count();
 
     std::vector<int> frames;
+    // --shards N: the count for --shard auto in a Kubernetes Indexed Job (issue 10).
+    const auto shards = args.has("--shards") ? std::optional(args.integer("--shards", 1, 1, 1'000'000)) : std::nullopt;
+    if (shards && !args.has("--shard")) throw UsageError("--shards N goes with --shard auto");
     try {
         frames = select_frames(n, args.has("--range") ? std::optional(parse_range(*args.value("--range")))
                                                       : std::nullopt,
-                               args.has("--shard") ? std::optional(parse_shard(*args.value("--shard")))
+                               args.has("--shard") ? std::optional(parse_shard_option(*args.value("--shard"), shards))
                                                    : std::nullopt);
-        warn_parallel_up(file, check_camera_path(movie));
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
+    try {
+        warn_parallel_up(file, check_camera_path(movie));
+    } catch (const std::invalid_argument& e) {
+        throw InputError(file, e.what());
+    }
     RenderSettings settings = movie.scene.render;
     apply_quality_flags(args, settings);
+    const int threads = args.integer("--threads", 0, 0, 1024);
 
     namespace fs = std::filesystem;
     const fs::path out =
         args.value("--out").value_or((fs::path("output") / fs::path(file).stem()).string());
-    std::error_code ec;
-    fs::create_directories(out, ec);
-    if (ec || !fs::is_directory(out))
-        throw std::runtime_error("cannot create output folder " + out.string() + ": " + ec.message());
+    prepare_output_folder(out.string());
+    if (const int removed = remove_stale_temporaries(out.string()))
+        std::cerr << "firsthit: removed " << removed << " temporary file(s) left by an interrupted run in "
+                  << out.string() << "\n";
 
     if (args.has("--resume"))
         std::erase_if(frames, [&](int i) { return is_complete_png((out / frame_file_name(i, n)).string()); });
 
-    install_interrupt_handlers();
-    ThreadPool pool(args.integer("--threads", 0, 0, 1024));
     Progress progress(int(frames.size()), !args.has("--quiet") && isatty(STDERR_FILENO));
+    // Frames are written under a shared lock; the interrupt watch takes it
+    // alone before ending the process, so no file is half written then.
+    std::shared_mutex write_mutex;
+    std::atomic<bool> finished{false};
+    const InterruptWatch watch(kInterruptGrace, [&](int sig) {
+        std::unique_lock lock(write_mutex);
+        if (finished) return;  // the run ended meanwhile: it reports itself
+        progress.finish();
+        std::cerr << "firsthit: interrupted after " << progress.done() << " of " << frames.size()
+                  << " frames (frames in flight abandoned); run again with --resume to render the rest\n";
+        std::_Exit(128 + sig);
+    });
+    ThreadPool pool(threads);
     std::mutex counts_mutex;
     RayCounts counts;
     pool.parallel_for(int(frames.size()), [&](int task, int) {
@@ -90,13 +138,20 @@ int run_frames(const Words& words) {
         const int i = frames[size_t(task)];
         const FrameResult r =
             render_frame(movie.scene, camera_at(movie, i), settings, movie.scene.effects, nullptr);
-        write_png((out / frame_file_name(i, n)).string(), r.image);
+        {
+            std::shared_lock lock(write_mutex);
+            write_png((out / frame_file_name(i, n)).string(), r.image);
+        }
         {
             std::lock_guard lock(counts_mutex);
             counts += r.counts;
         }
         progress.frame_done();
     });
+    {
+        std::unique_lock lock(write_mutex);
+        finished = true;
+    }
     progress.finish();
     if (interrupted()) {
         std::cerr << "firsthit: interrupted after " << progress.done() << " of " << frames.size()

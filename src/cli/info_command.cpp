@@ -55,8 +55,9 @@ int run_info(const Words& words) {
                   << "first_frame_file: " << frame_file_name(0, m.frame_count()) << "\n";
         print_scene(m.scene);
     } else {
+        const Scene scene = load_scene(file);  // before printing: an error prints nothing else
         std::cout << "kind: scene\n";
-        print_scene(load_scene(file));
+        print_scene(scene);
     }
     return 0;
 }

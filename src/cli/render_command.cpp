@@ -1,8 +1,11 @@
 // firsthit render FILE: one frame to PNG.
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <mutex>
 
 #include "cli/commands.h"
+#include "cli/interrupt.h"
 #include "cli/job.h"
 #include "cli/stats_output.h"
 #include "io/png_writer.h"
@@ -20,6 +23,9 @@ Renders one frame of a scene or movie file to a PNG.
   --spp N            samples per pixel (default: the file's, else 1)
   --depth N          maximum chain of reflection rays (default: the file's, else 5)
   --precision P      float or double: the tracer's scalar type (default double)
+  --adaptive         adaptive anti-aliasing: pixels that differ from a
+                     neighbour by more than --aa-threshold (0..255, default 8)
+                     are rendered again with --aa-samples samples (default 16)
   --threads N        worker threads (default: one per core)
   --no-prune         debug: simulate every effect asked for, even those the
                      effect plan proves cannot change a pixel (same image, slower)
@@ -50,10 +56,28 @@ int run_render(const Words& words) {
     const int threads = args.integer("--threads", 0, 0, 1024);
     std::string out = args.value("-o").value_or(args.value("--output").value_or(""));
     if (out.empty()) out = default_output(job);
+    check_output_file(out);  // before rendering: a bad place is bad input
 
+    // SIGINT/SIGTERM: stop at once, but never in the middle of writing the
+    // file (so no temporary is left behind).
+    std::mutex write_mutex;
+    bool written = false;
+    const InterruptWatch watch(std::chrono::milliseconds(0), [&](int sig) {
+        write_mutex.lock();  // held until the process ends
+        if (written) {       // too late to stop: the run ends normally
+            write_mutex.unlock();
+            return;
+        }
+        std::cerr << "firsthit: interrupted; nothing written\n";
+        std::_Exit(128 + sig);
+    });
     ThreadPool pool(threads);
     const FrameResult r = render_frame(job.scene, job.camera, job.settings, job.effects, &pool);
-    write_png(out, r.image);
+    {
+        const std::lock_guard lock(write_mutex);
+        write_png(out, r.image);
+        written = true;
+    }
     if (args.has("--stats")) {
         std::cout << "file: " << job.file << "\n";
         if (job.frame >= 0) std::cout << "frame: " << job.frame << "\n";

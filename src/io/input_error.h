@@ -4,15 +4,41 @@
 // with exit status 2.
 #pragma once
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
 namespace fh {
 
+// `text` made safe for one line on a terminal: control characters (C0, DEL
+// and C1, so also newlines) become \xNN, and past `max_bytes` it is cut, on
+// a character boundary, and ends in "...". Messages quote values from files,
+// which may be long or hold escapes like "\n".
+inline std::string printable(const std::string& text, std::size_t max_bytes = 400) {
+    static const char hex[] = "0123456789abcdef";
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        const bool c1 = c == 0xc2 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) >= 0x80 &&
+                        static_cast<unsigned char>(text[i + 1]) <= 0x9f;
+        // A character starts at any byte but a UTF-8 continuation byte.
+        if ((c & 0xc0) != 0x80 && out.size() >= max_bytes) return out + "...";
+        if (c < 0x20 || c == 0x7f || c1) {
+            const auto code = c1 ? static_cast<unsigned char>(text[++i]) : c;
+            out += "\\x";
+            out += hex[code >> 4];
+            out += hex[code & 15];
+        } else {
+            out += static_cast<char>(c);
+        }
+    }
+    return out;
+}
+
 class InputError : public std::runtime_error {
 public:
     InputError(std::string file, int line, int column, const std::string& what)
-        : std::runtime_error(what), file_(std::move(file)), line_(line), column_(column) {}
+        : std::runtime_error(printable(what)), file_(std::move(file)), line_(line), column_(column) {}
     InputError(std::string file, const std::string& what) : InputError(std::move(file), 0, 0, what) {}
 
     const std::string& file() const { return file_; }
@@ -21,7 +47,7 @@ public:
 
     // "FILE:LINE:COLUMN: error: WHAT", or "FILE: error: WHAT" without a position.
     std::string formatted() const {
-        std::string s = file_;
+        std::string s = printable(file_, 4096);
         if (line_ > 0) s += ":" + std::to_string(line_) + ":" + std::to_string(column_);
         return s + ": error: " + what();
     }
@@ -35,7 +61,7 @@ private:
 // Bad command-line usage: exit status 2, printed as "firsthit: error: WHAT".
 class UsageError : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    explicit UsageError(const std::string& what) : std::runtime_error(printable(what)) {}
 };
 
 }  // namespace fh

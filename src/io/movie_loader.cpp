@@ -4,6 +4,7 @@
 #include <climits>
 #include <cmath>
 #include <filesystem>
+#include <unordered_set>
 
 #include "io/scene_loader.h"
 #include "io/map_reader.h"
@@ -28,6 +29,7 @@ std::string scene_path(const YamlReader& r, const MapReader& m) {
     const fs::file_status status = fs::status(path, ec);
     if (!fs::exists(status)) r.fail(node, "scene file '" + path.string() + "' does not exist");
     if (fs::is_directory(status)) r.fail(node, "scene file '" + path.string() + "' is a directory");
+    if (!fs::is_regular_file(status)) r.fail(node, "scene file '" + path.string() + "' is not a regular file");
     if (fs::equivalent(path, r.file(), ec)) r.fail(node, "a movie cannot be its own scene");
     // Loading a movie as a scene would only complain about an unknown key 'scene'.
     if (is_movie_file(path.string())) r.fail(node, "scene file '" + path.string() + "' is a movie, not a scene");
@@ -90,12 +92,12 @@ Keyframes read_keyframes(const YamlReader& r, const MapReader& m, const std::str
     r.expect_list(list, "'keyframes'");
     if (list.size() == 0) r.fail(list, "'keyframes' must have at least one key");
     Keyframes k;
+    std::unordered_set<int> frames;  // linear time for many keys
     for (const YAML::Node& item : list) {
         const MapReader key(r, item, "keyframe", {"frame", "value"});
         const Keyframe kf{key.integer("frame", 0, INT_MAX), property_value(r, key.value("value"), property)};
-        for (const Keyframe& other : k.keys)
-            if (other.frame == kf.frame)
-                r.fail(key.value("frame"), "duplicate keyframe for frame " + std::to_string(kf.frame));
+        if (!frames.insert(kf.frame).second)
+            r.fail(key.value("frame"), "duplicate keyframe for frame " + std::to_string(kf.frame));
         k.keys.push_back(kf);
     }
     std::sort(k.keys.begin(), k.keys.end(), [](const Keyframe& a, const Keyframe& b) { return a.frame < b.frame; });
@@ -148,10 +150,13 @@ YAML::Node block(const MapReader& m, const std::string& key) {
 
 }  // namespace
 
-Movie load_movie(const std::string& path) {
+namespace {
+
+// The movie in `text` (read from the file when it is null).
+Movie load_movie_text(const std::string* text, const std::string& path) {
     try {
         const YamlReader r(path);
-        const MapReader m(r, r.load_map("movie"), "movie",
+        const MapReader m(r, text ? r.parse_map(*text, "movie") : r.load_map("movie"), "movie",
                           {"scene", "camera", "lights", "fps", "seconds", "animate", "render", "effects"});
         Movie movie;
         movie.scene = load_scene(scene_path(r, m));
@@ -169,12 +174,24 @@ Movie load_movie(const std::string& path) {
     }
 }
 
+}  // namespace
+
+Movie load_movie(const std::string& path) { return load_movie_text(nullptr, path); }
+
+Movie load_movie_from_string(const std::string& text, const std::string& path) {
+    return load_movie_text(&text, path);
+}
+
 bool is_movie_file(const std::string& path) {
     try {
-        std::error_code ec;
-        if (!fs::is_regular_file(path, ec)) return false;
-        const YAML::Node root = YAML::LoadFile(path);
-        return root.IsMap() && root["scene"];
+        // The same checked reading as loading: size, text, nesting.
+        const YamlReader r(path);
+        const YAML::Node root = r.load_map("movie");
+        for (auto it = root.begin(); it != root.end(); ++it) {
+            const YAML::Node key = it->first;
+            if (key.IsScalar() && key.Scalar() == "scene") return true;
+        }
+        return false;
     } catch (const std::exception&) {
         return false;
     }

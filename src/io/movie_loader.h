@@ -20,9 +20,14 @@ inline constexpr int kMaxMovieFrames = 1'000'000;
 // against the scene file.
 Movie load_movie(const std::string& path);
 
+// The same from the movie file's text in memory; `path` names it in errors
+// and is where `scene:` is found from (the scene file itself is read from disk).
+Movie load_movie_from_string(const std::string& text, const std::string& path);
+
 // True when the file is a YAML map with a `scene` key, i.e. a movie rather than
-// a scene. False for anything else, unreadable or unparsable files included
-// (loading it as a scene then reports what is wrong).
+// a scene. False for anything else, unreadable, too large, binary, too deeply
+// nested or unparsable files included (loading it as a scene then reports
+// what is wrong).
 bool is_movie_file(const std::string& path);
 
 }  // namespace fh

@@ -188,10 +188,13 @@ Effects read_effects(const YamlReader& r, const YAML::Node& node) {
     return fx;
 }
 
-Scene load_scene(const std::string& path) {
+namespace {
+
+// The scene in `text` (read from the file when it is null).
+Scene load_scene_text(const std::string* text, const std::string& path) {
     try {
         const YamlReader r(path);
-        const MapReader top(r, r.load_map("scene"), "scene",
+        const MapReader top(r, text ? r.parse_map(*text, "scene") : r.load_map("scene"), "scene",
                             {"materials", "surfaces", "lights", "cameras", "render", "effects"});
         Scene scene;
         // Materials first, whatever the file's order: surfaces refer to them.
@@ -205,6 +208,14 @@ Scene load_scene(const std::string& path) {
     } catch (const YAML::Exception& e) {
         throw to_input_error(path, e);
     }
+}
+
+}  // namespace
+
+Scene load_scene(const std::string& path) { return load_scene_text(nullptr, path); }
+
+Scene load_scene_from_string(const std::string& text, const std::string& file) {
+    return load_scene_text(&text, file);
 }
 
 }  // namespace fh

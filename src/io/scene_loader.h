@@ -21,6 +21,11 @@ class YamlReader;
 // distance is rescaled with its normal so it stays the same plane.
 Scene load_scene(const std::string& path);
 
+// The same from the file's text in memory; `file` only names it in errors
+// (the fuzzer and tests use this). The text gets the checks of a file's:
+// size, text encoding and nesting depth (io/yaml_reader.h).
+Scene load_scene_from_string(const std::string& text, const std::string& file);
+
 // The `render:` map (samples_per_pixel, max_depth, precision): each key given
 // replaces the value in `settings`, so a movie can override a scene's. A null
 // node changes nothing.

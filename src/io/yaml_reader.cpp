@@ -9,29 +9,18 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <cstdio>
+#include <sstream>
+
+#include <sys/stat.h>
 
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/parser.h>
 
 namespace fh {
 
 namespace {
-
-std::string read_text(const std::string& path) {
-    std::error_code ec;
-    // Opening a directory succeeds on Linux and then reads nothing; say why.
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path, "cannot read file: is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        std::string reason = std::strerror(errno);
-        if (!reason.empty()) reason[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(reason[0])));
-        throw InputError(path, "cannot read file: " + reason);
-    }
-    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) throw InputError(path, "cannot read file: read error");
-    return text;
-}
 
 // A quoted scalar ("1") is text even when it looks like a number.
 bool is_text(const YAML::Node& node) {
@@ -72,20 +61,181 @@ std::string quoted_list(const std::vector<std::string>& options) {
     return s;
 }
 
+std::string lowercase_first(std::string s) {
+    if (!s.empty()) s[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(s[0])));
+    return s;
+}
+
+std::string hex_byte(unsigned char c) {
+    static const char hex[] = "0123456789abcdef";
+    return std::string("0x") + hex[c >> 4] + hex[c & 15];
+}
+
+// The length of the valid UTF-8 character at text[i], or 0 when the bytes
+// there are not one (overlong forms, surrogates and values past U+10FFFF are
+// not), or when it is a C1 control character (U+0080..U+009F, not allowed in
+// YAML but for U+0085).
+std::size_t utf8_length(const std::string& text, std::size_t i) {
+    const auto byte = [&](std::size_t k) { return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u; };
+    const unsigned c = byte(i);
+    const auto cont = [&](std::size_t k, unsigned lo = 0x80, unsigned hi = 0xbf) {
+        return byte(k) >= lo && byte(k) <= hi;
+    };
+    if (c < 0x80) return 1;
+    if (c == 0xc2) return (cont(i + 1, 0xa0) || byte(i + 1) == 0x85) ? 2 : 0;
+    if (c >= 0xc3 && c <= 0xdf) return cont(i + 1) ? 2 : 0;
+    if (c == 0xe0) return cont(i + 1, 0xa0) && cont(i + 2) ? 3 : 0;
+    if (c == 0xed) return cont(i + 1, 0x80, 0x9f) && cont(i + 2) ? 3 : 0;
+    if (c >= 0xe1 && c <= 0xef) return cont(i + 1) && cont(i + 2) ? 3 : 0;
+    if (c == 0xf0) return cont(i + 1, 0x90) && cont(i + 2) && cont(i + 3) ? 4 : 0;
+    if (c >= 0xf1 && c <= 0xf3) return cont(i + 1) && cont(i + 2) && cont(i + 3) ? 4 : 0;
+    if (c == 0xf4) return cont(i + 1, 0x80, 0x8f) && cont(i + 2) && cont(i + 3) ? 4 : 0;
+    return 0;
+}
+
+// The character at a yaml-cpp mark (0-based line, column in characters), for
+// messages; "" when there is none.
+std::string char_at(const std::string& text, const YAML::Mark& mark) {
+    std::size_t i = 0;
+    for (int line = 0; line < mark.line && i < text.size(); ++i)
+        if (text[i] == '\n') ++line;
+    for (int col = 0; col < mark.column && i < text.size(); ++col) i += std::max<std::size_t>(1, utf8_length(text, i));
+    if (i >= text.size()) return "";
+    return text.substr(i, std::max<std::size_t>(1, utf8_length(text, i)));
+}
+
+// Follows the parser's events and refuses maps and lists nested deeper than
+// kMaxYamlNesting as soon as the first one opens, so the recursive parser
+// never goes deeper either. Aliases are not expanded.
+class NestingCheck : public YAML::EventHandler {
+public:
+    explicit NestingCheck(const std::string& file) : file_(file) {}
+
+    YAML::Mark document_start() const { return document_start_; }
+
+    void OnDocumentStart(const YAML::Mark& mark) override {
+        depth_ = 0;
+        document_start_ = mark;
+    }
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+    void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                         YAML::EmitterStyle::value) override {
+        open(mark);
+    }
+    void OnSequenceEnd() override { --depth_; }
+    void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+        open(mark);
+    }
+    void OnMapEnd() override { --depth_; }
+
+private:
+    void open(const YAML::Mark& mark) {
+        if (++depth_ <= kMaxYamlNesting) return;
+        const std::string message =
+            "maps and lists nested more than " + std::to_string(kMaxYamlNesting) + " levels deep";
+        if (mark.is_null()) throw InputError(file_, message);
+        throw InputError(file_, mark.line + 1, mark.column + 1, message);
+    }
+
+    const std::string& file_;
+    int depth_ = 0;
+    YAML::Mark document_start_ = YAML::Mark::null_mark();
+};
+
+// Runs the parser over the text once before any node is built: refuses deep
+// nesting (above) and a second document. This also guards against a bug of
+// yaml-cpp 0.7 (jbeder/yaml-cpp#1040, fixed upstream in 2024 by #1319): a
+// token that cannot start a value, such as a ',' outside brackets, is not
+// consumed, and the parser reports an empty document for it again and again,
+// so YAML::LoadAll loops forever and eats memory. Here parsing stops at the
+// second document, whatever it is.
+void check_structure(const std::string& file, const std::string& text) {
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    NestingCheck check(file);
+    if (!parser.HandleNextDocument(check)) return;  // no document at all
+    const YAML::Mark first = check.document_start();
+    if (!parser.HandleNextDocument(check)) return;
+    const YAML::Mark second = check.document_start();
+    const std::string c = char_at(text, second);
+    const bool stuck = second.pos == first.pos;  // nothing consumed: the bug above
+    const bool cannot_start = c == "," || c == "]" || c == "}";
+    const std::string message = (stuck || cannot_start) ? "invalid yaml: unexpected '" + c + "'"
+                                                        : "expected a single yaml document";
+    if (second.is_null()) throw InputError(file, message);
+    throw InputError(file, second.line + 1, second.column + 1, message);
+}
+
 }  // namespace
 
-YAML::Node YamlReader::load_map(const std::string& what) const {
-    const std::string text = read_text(file_);
-    std::vector<YAML::Node> docs;
+void check_input_text(const std::string& file, const std::string& text) {
+    if (text.size() > kMaxInputBytes)
+        throw InputError(file, "file too large: " + std::to_string(text.size()) + " bytes (the limit is " +
+                                   std::to_string(kMaxInputBytes) + " bytes, 1 MiB)");
+    int line = 1, column = 1;
+    for (std::size_t i = 0; i < text.size();) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c == '\n') {
+            ++line;
+            column = 1;
+            ++i;
+            continue;
+        }
+        if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f)
+            throw InputError(file, line, column,
+                             "binary data, not text: control byte " + hex_byte(c) +
+                                 " (scene and movie files are UTF-8 text)");
+        const std::size_t length = utf8_length(text, i);
+        if (length == 0)
+            throw InputError(file, line, column,
+                             "not UTF-8 text: byte " + hex_byte(c) + " (scene and movie files are UTF-8 text)");
+        i += length;
+        ++column;
+    }
+}
+
+std::string read_input_file(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0)
+        throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(errno)));
+    // Opening a folder succeeds on Linux and then reads nothing; a device or a
+    // pipe may never end. Say why instead.
+    if (S_ISDIR(st.st_mode)) throw InputError(path, "cannot read file: is a directory");
+    if (!S_ISREG(st.st_mode)) throw InputError(path, "cannot read file: not a regular file");
+    if (static_cast<unsigned long long>(st.st_size) > kMaxInputBytes)
+        throw InputError(path, "file too large: " + std::to_string(st.st_size) + " bytes (the limit is " +
+                                   std::to_string(kMaxInputBytes) + " bytes, 1 MiB)");
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(errno)));
+    // At most one byte past the limit, should the file have grown since.
+    std::string text(kMaxInputBytes + 1, '\0');
+    const std::size_t n = std::fread(text.data(), 1, text.size(), f);
+    const bool failed = std::ferror(f) != 0;
+    const int read_errno = errno;
+    std::fclose(f);
+    if (failed) throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(read_errno)));
+    text.resize(n);
+    check_input_text(path, text);
+    return text;
+}
+
+YAML::Node YamlReader::load_map(const std::string& what) const { return parse_map(read_input_file(file_), what); }
+
+YAML::Node YamlReader::parse_map(const std::string& text, const std::string& what) const {
+    check_input_text(file_, text);
+    YAML::Node root;
     try {
-        docs = YAML::LoadAll(text);
+        check_structure(file_, text);  // first: nesting, at most one document
+        root = YAML::Load(text);
     } catch (const YAML::Exception& e) {
         throw to_input_error(file_, e);
     }
-    if (docs.empty() || docs.front().IsNull()) throw InputError(file_, "empty " + what + " file");
-    if (docs.size() > 1) fail(docs[1], "expected a single yaml document");
-    if (!docs.front().IsMap()) fail(docs.front(), "expected a map at the top level, " + got(docs.front()));
-    return docs.front();
+    if (root.IsNull()) throw InputError(file_, "empty " + what + " file");
+    if (!root.IsMap()) fail(root, "expected a map at the top level, " + got(root));
+    return root;
 }
 
 void YamlReader::fail(const YAML::Mark& mark, const std::string& message) const {
@@ -196,7 +346,7 @@ void YamlReader::expect_list(const YAML::Node& node, const std::string& name) co
 std::string got(const YAML::Node& node) {
     if (node.IsSequence()) return "got a list";
     if (node.IsMap()) return "got a map";
-    if (node.IsScalar()) return "got '" + node.Scalar() + "'";
+    if (node.IsScalar()) return "got '" + printable(node.Scalar(), 60) + "'";
     return "got nothing";
 }
 
@@ -228,7 +378,11 @@ int edit_distance(const std::string& a, const std::string& b) {
 std::string closest_match(const std::string& word, const std::vector<std::string>& options) {
     std::string best;
     int best_distance = INT_MAX;
+    // The distance is at least the difference in length: long words (a name
+    // may be a megabyte) are never compared at quadratic cost.
+    if (word.size() > 64) return best;
     for (const std::string& option : options) {
+        if (option.size() > word.size() + 2 || word.size() > option.size() + 2) continue;
         const int dist = edit_distance(word, option);
         // At most 2 edits, and not more than half the word: "u" may be "up",
         // but "x" is not "up".

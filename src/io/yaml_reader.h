@@ -4,6 +4,7 @@
 // 0-based), so a typo is reported where it is, never passed over silently.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,21 @@
 #include "io/input_error.h"
 
 namespace fh {
+
+// Documented limits on input files, checked before any YAML is parsed.
+// 1 MiB is 500 times the report's scene; a bigger file is refused, not read.
+inline constexpr std::size_t kMaxInputBytes = std::size_t(1) << 20;
+// Maps and lists nested deeper than this are refused (the formats need 5).
+inline constexpr int kMaxYamlNesting = 64;
+
+// Reads a scene or movie file as text: it must be a regular file (not a
+// folder, device or pipe) of at most kMaxInputBytes, and text: UTF-8 without
+// control characters other than tab, line feed and carriage return. Anything
+// else is an InputError naming the file (and the offending byte's position).
+std::string read_input_file(const std::string& path);
+
+// The same checks on text already in memory (`file` names it in errors).
+void check_input_text(const std::string& file, const std::string& text);
 
 // Reads values of one file; knows the file name to put in front of errors.
 class YamlReader {
@@ -24,6 +40,10 @@ public:
     // Reads and parses the whole file: one YAML document whose top level is a
     // map. Unreadable file, syntax error, empty file or another top level: InputError.
     YAML::Node load_map(const std::string& what) const;
+    // The same for text in memory (file() only names it in errors). The text
+    // is checked as read_input_file checks a file's, then its nesting depth
+    // (at most kMaxYamlNesting) before it is turned into nodes.
+    YAML::Node parse_map(const std::string& text, const std::string& what) const;
 
     [[noreturn]] void fail(const YAML::Mark& mark, const std::string& message) const;
     [[noreturn]] void fail(const YAML::Node& node, const std::string& message) const;

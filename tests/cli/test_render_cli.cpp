@@ -97,11 +97,13 @@ TEST(RenderCli, BadSceneFileIsOneLineWithPositionAndNoOutput) {
     EXPECT_FALSE(std::filesystem::exists(out));
 }
 
-TEST(RenderCli, UnwritableOutputExitsOneAndLeavesNothing) {
+TEST(RenderCli, UnwritableOutputIsBadInputAndLeavesNothing) {
+    // Found before rendering: bad input, exit 2.
     const auto r = run_firsthit("render " + source_path("animations/scene.yaml") +
                                 " -o /nonexistent-dir/x.png");
-    EXPECT_EQ(r.status, 1);
-    EXPECT_EQ(r.err.rfind("firsthit: error: cannot write /nonexistent-dir/x.png", 0), 0u) << r.err;
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "/nonexistent-dir/x.png: error: cannot write: folder '/nonexistent-dir' does not exist\n");
+    EXPECT_FALSE(std::filesystem::exists("/nonexistent-dir"));
 }
 
 TEST(RenderCli, InfoDescribesAMovie) {

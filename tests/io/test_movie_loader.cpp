@@ -145,6 +145,49 @@ TEST(MovieLoader, SceneIsTheMovieItself) {
     EXPECT_EQ(movie_error("scene: movie.yaml\n"), "FILE:1:8: error: a movie cannot be its own scene");
 }
 
+TEST(MovieLoader, SceneIsNotARegularFile) {
+    EXPECT_EQ(movie_error("scene: /dev/zero\n"), "FILE:1:8: error: scene file '/dev/zero' is not a regular file");
+}
+
+TEST(MovieLoader, SceneIsAnotherMovie) {
+    write_temp_file("movies/other_movie.yaml", "scene: scene.yaml\n");
+    EXPECT_EQ(movie_error("scene: other_movie.yaml\n"),
+              "FILE:1:8: error: scene file 'DIR/other_movie.yaml' is a movie, not a scene");
+}
+
+TEST(MovieLoader, SceneNameIsEmptyOrNotAName) {
+    EXPECT_EQ(movie_error("scene:\n"), "FILE:1:1: error: missing value for 'scene'");
+    EXPECT_EQ(movie_error("scene: [a.yaml]\n"), "FILE:1:8: error: expected a name for 'scene', got a list");
+    EXPECT_EQ(movie_error("scene: \"\"\n"), "FILE:1:8: error: scene file 'DIR/' is a directory");
+}
+
+TEST(MovieLoader, EmptyAndBinaryMovieFiles) {
+    EXPECT_EQ(movie_error(""), "FILE: error: empty movie file");
+    EXPECT_EQ(movie_error(std::string("scene: scene.yaml\n\0\0", 20)),
+              "FILE:2:1: error: binary data, not text: control byte 0x00 (scene and movie files are UTF-8 text)");
+}
+
+TEST(MovieLoader, FromStringResolvesTheSceneNextToThePath) {
+    movie_path("scene: scene.yaml\n");  // writes the scene
+    const std::string path = (test::temp_dir() / "movies" / "in_memory.yaml").string();
+    const Movie m = load_movie_from_string("scene: scene.yaml\ncamera: ortho\nfps: 2\nseconds: 3\n", path);
+    EXPECT_EQ(m.camera.name, "ortho");
+    EXPECT_EQ(m.frame_count(), 6);
+    try {
+        load_movie_from_string("scene: scene.yaml\nfps: 0\n", path);
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.formatted(), path + ":2:6: error: 'fps' must be > 0, got 0");
+    }
+}
+
+TEST(MovieLoader, ManyKeyframesAreCheckedInLinearTime) {
+    std::string yaml = "scene: scene.yaml\nanimate:\n  view_point:\n    keyframes:\n";
+    for (int i = 0; i < 20000; ++i) yaml += "      - {frame: " + std::to_string(i) + ", value: [0, 0, 1]}\n";
+    yaml += "      - {frame: 19999, value: [0, 0, 1]}\n";
+    EXPECT_EQ(movie_error(yaml), "FILE:20005:17: error: duplicate keyframe for frame 19999");
+}
+
 TEST(MovieLoader, ErrorInTheSceneIsReportedAgainstTheScene) {
     write_temp_file("movies/bad_scene.yaml", "cameras: {}\n");
     EXPECT_EQ(movie_error("scene: bad_scene.yaml\n"),
@@ -164,6 +207,11 @@ TEST(MovieLoader, FpsAndSecondsMustBePositive) {
     EXPECT_EQ(movie_error("scene: scene.yaml\nfps: 0\n"), "FILE:2:6: error: 'fps' must be > 0, got 0");
     EXPECT_EQ(movie_error("scene: scene.yaml\nseconds: -1\n"), "FILE:2:10: error: 'seconds' must be > 0, got -1");
     EXPECT_EQ(movie_error("scene: scene.yaml\nfps: .inf\n"), "FILE:2:6: error: 'fps' must be finite");
+    EXPECT_EQ(movie_error("scene: scene.yaml\nfps: -30\n"), "FILE:2:6: error: 'fps' must be > 0, got -30");
+    EXPECT_EQ(movie_error("scene: scene.yaml\nseconds: 0\n"), "FILE:2:10: error: 'seconds' must be > 0, got 0");
+    EXPECT_EQ(movie_error("scene: scene.yaml\nseconds: -0.0\n"), "FILE:2:10: error: 'seconds' must be > 0, got -0.0");
+    EXPECT_EQ(movie_error("scene: scene.yaml\nseconds: .nan\n"), "FILE:2:10: error: 'seconds' must be finite");
+    EXPECT_EQ(movie_error("scene: scene.yaml\nfps: thirty\n"), "FILE:2:6: error: expected a number for 'fps', got 'thirty'");
 }
 
 TEST(MovieLoader, FrameCountLimits) {

@@ -312,6 +312,54 @@ TEST(SceneLoader, ImageSize) {
               "FILE:3:31: error: expected an integer for 'width', got '10.5'");
 }
 
+TEST(SceneLoader, ImageSizeNegativeAndHeight) {
+    const std::string head = "cameras:\n  cam: {type: orthographic, view_point: [0, 0, 0], look_at: [0, 0, -1],\n";
+    EXPECT_EQ(scene_error(head + "        up: [0, 1, 0], width: -5, height: 10}\n"),
+              "FILE:3:31: error: 'width' must be between 1 and 16384, got -5");
+    EXPECT_EQ(scene_error(head + "        up: [0, 1, 0], width: 10, height: 0}\n"),
+              "FILE:3:43: error: 'height' must be between 1 and 16384, got 0");
+    EXPECT_EQ(scene_error(head + "        up: [0, 1, 0], width: 100000, height: 100000}\n"),
+              "FILE:3:31: error: 'width' must be between 1 and 16384, got 100000");
+    EXPECT_EQ(scene_error(head + "        up: [0, 1, 0], width: 16384, height: 16385}\n"),
+              "FILE:3:46: error: 'height' must be between 1 and 16384, got 16385");
+    EXPECT_EQ(scene_error(head + "        up: [0, 1, 0], width: .nan, height: 1}\n"),
+              "FILE:3:31: error: expected an integer for 'width', got '.nan'");
+}
+
+TEST(SceneLoader, ZeroLengthUp) {
+    EXPECT_EQ(scene_error("cameras:\n"
+                          "  cam: {type: orthographic, width: 1, height: 1, view_point: [0, 0, 0],\n"
+                          "        look_at: [0, 0, -1], up: [0, 0, 0]}\n"),
+              "FILE:3:34: error: 'up' must not be zero-length");
+}
+
+TEST(SceneLoader, ZeroLengthSpotDirection) {
+    EXPECT_EQ(scene_error(kCamera +
+                          "lights:\n"
+                          "  s: {type: spot, color: [255, 255, 255], intensity: 1, position: [0, 0, 1],\n"
+                          "      direction: [0, -0.0, 0]}\n"),
+              "FILE:6:18: error: 'direction' must not be zero-length");
+}
+
+TEST(SceneLoader, InfinityAndNotANumberEverywhere) {
+    // Every kind of number refuses .inf and .nan in all their spellings.
+    EXPECT_EQ(scene_error(kCamera + "lights:\n  s: {type: spot, color: [255, 255, 255], intensity: 1,"
+                                    " position: [0, 0, .Inf], direction: [0, 0, -1]}\n"),
+              "FILE:5:74: error: 'position' must be finite");
+    EXPECT_EQ(scene_error(kCamera + "lights:\n  s: {type: spot, color: [255, 255, 255], intensity: 1,"
+                                    " position: [0, 0, 1], direction: [0, 0, -1], max_angle: .NaN}\n"),
+              "FILE:5:112: error: 'max_angle' must be finite");
+    EXPECT_EQ(scene_error(kCamera + "materials:\n  m: {color: [1, 1, .nan], ambient: 0, diffuse: 0,"
+                                    " specular: 0, phong_exponent: 1}\n"),
+              "FILE:5:21: error: 'color' must be finite");
+    EXPECT_EQ(scene_error(kCamera + "materials:\n  m: {color: [1, 1, 1], ambient: 0, diffuse: 0,"
+                                    " specular: 0, phong_exponent: +.inf}\n"),
+              "FILE:5:78: error: 'phong_exponent' must be finite");
+    EXPECT_EQ(scene_error("cameras:\n  c: {type: perspective, width: 1, height: 1, view_point: [0, 0, 0],"
+                          " look_at: [0, 0, -1], up: [0, 1, 0], projection_distance: -.inf}\n"),
+              "FILE:2:127: error: 'projection_distance' must be finite");
+}
+
 TEST(SceneLoader, ProjectionDistanceOnlyForPerspective) {
     EXPECT_EQ(scene_error("cameras:\n"
                           "  o: {type: orthographic, width: 1, height: 1, view_point: [0, 0, 0],\n"
@@ -331,6 +379,19 @@ TEST(SceneLoader, RenderLimits) {
               "FILE:4:21: error: 'max_depth' must be between 0 and 64, got -1");
     EXPECT_EQ(scene_error(kCamera + "render: {precision: half}\n"),
               "FILE:4:21: error: unknown precision 'half' (expected float or double)");
+}
+
+TEST(SceneLoader, RenderLimitsAtAndPastTheEdges) {
+    EXPECT_EQ(scene_error(kCamera + "render: {samples_per_pixel: 0}\n"),
+              "FILE:4:29: error: 'samples_per_pixel' must be between 1 and 4096, got 0");
+    EXPECT_EQ(scene_error(kCamera + "render: {max_depth: 65}\n"),
+              "FILE:4:21: error: 'max_depth' must be between 0 and 64, got 65");
+    EXPECT_EQ(scene_error(kCamera + "render: {max_depth: 1000000000000}\n"),
+              "FILE:4:21: error: 'max_depth' must be between 0 and 64, got 1000000000000");
+    const std::string path = test::write_temp_file("edges.yaml", kCamera + "render: {samples_per_pixel: 4096, max_depth: 64}\n");
+    const Scene s = load_scene(path);
+    EXPECT_EQ(s.render.samples_per_pixel, 4096);
+    EXPECT_EQ(s.render.max_depth, 64);
 }
 
 TEST(SceneLoader, UnknownEffect) {

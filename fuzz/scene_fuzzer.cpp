@@ -1,0 +1,22 @@
+// libFuzzer target: the scene loader on arbitrary bytes (scripts/fuzz.sh).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "fuzz_common.h"
+#include "io/scene_loader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    fh::Scene scene;
+    try {
+        scene = fh::load_scene_from_string(text, "fuzz_scene.yaml");
+    } catch (const fh::InputError& e) {
+        fh::fuzz::check_message(e);
+        return 0;
+    }
+    // Any other exception escapes and is reported as a crash.
+    for (const fh::Camera& camera : scene.cameras)
+        fh::fuzz::render_tiny(scene, camera, scene.render, scene.effects);
+    return 0;
+}

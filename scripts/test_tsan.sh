@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The thread pool, the multi-threaded renders and the frames command under
+# ThreadSanitizer: builds the tests in build-tsan/ (-fsanitize=thread) and
+# runs the tests that use threads. Any data race fails it.
+#   bash scripts/test_tsan.sh
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+build=${FIRSTHIT_TSAN_BUILD:-$here/build-tsan}
+flags="-fsanitize=thread -g -O1 -fno-omit-frame-pointer"
+
+mkdir -p "$build"
+if ! { cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFIRSTHIT_NATIVE=OFF \
+         -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" &&
+       cmake --build "$build" -j "$(nproc)" --target firsthit firsthit_tests; } >"$build/build.log" 2>&1; then
+  echo "test_tsan: the build failed; the end of $build/build.log:" >&2
+  tail -n 40 "$build/build.log" >&2
+  exit 1
+fi
+
+# Thread pool; multi-threaded renders giving the same bytes; the frames
+# command (one frame per worker, the interrupt watch) run as its own process.
+filter='ThreadPool.*:ReportImages.SameBytesForAnyThreadCount:FramesCli.*:Determinism*.*:Interrupt*.*'
+export TSAN_OPTIONS="halt_on_error=1 abort_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
+cd "$here"
+# setarch -R: ThreadSanitizer of GCC 12 / clang 14 cannot map its shadow
+# memory under the high mmap randomisation of recent kernels.
+run=()
+if setarch "$(uname -m)" -R true 2>/dev/null; then run=(setarch "$(uname -m)" -R); fi
+"${run[@]}" "$build/tests/firsthit_tests" --gtest_filter="$filter" --gtest_brief=1
+echo "test_tsan: no data race found"
