@@ -7,6 +7,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/vec.h"
@@ -44,7 +46,11 @@ struct SpotLight {
         const T cos_theta = std::clamp(-glm::dot(r.to_light, axis), T(-1), T(1));
         const T theta = std::acos(cos_theta);
         if (cone_test && theta > max_angle) return r;
-        r.intensity = intensity * std::max(T(0), T(1) - theta / max_angle) / d2;
+        // Right next to the light, d^2 can be so small (subnormal) that I / d^2
+        // overflows to infinity. Capped at sqrt(max): finite, with room for the
+        // colour products, and saturating every pixel it reaches anyway.
+        const T cap = std::sqrt(std::numeric_limits<T>::max());
+        r.intensity = std::min(cap, intensity * std::max(T(0), T(1) - theta / max_angle) / d2);
         return r;
     }
 };

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Every test once more under AddressSanitizer and UndefinedBehaviorSanitizer
+# (issue 4): builds firsthit and the tests in build-asan/ and runs CTest there.
+# Any memory error, leak or undefined behaviour fails the test it happens in.
+# The slowest loop of the robustness battery (a million rays at the
+# tetrahedron's edges) runs a quarter of its rays there.
+#   bash scripts/test_sanitizers.sh
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+build=${FIRSTHIT_ASAN_BUILD:-$here/build-asan}
+flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
+
+mkdir -p "$build"
+if ! { cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFIRSTHIT_NATIVE=ON \
+         -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" &&
+       cmake --build "$build" -j "$(nproc)" --target firsthit firsthit_tests; } >"$build/build.log" 2>&1; then
+  echo "test_sanitizers: the build failed; the end of $build/build.log:" >&2
+  tail -n 40 "$build/build.log" >&2
+  exit 1
+fi
+
+export ASAN_OPTIONS="abort_on_error=1 detect_stack_use_after_return=1 strict_string_checks=1 ${ASAN_OPTIONS:-}"
+export UBSAN_OPTIONS="print_stacktrace=1 halt_on_error=1 ${UBSAN_OPTIONS:-}"
+cd "$build"
+ctest --output-on-failure -j "$(nproc)"
+echo "test_sanitizers: no memory error or undefined behaviour found"
