@@ -8,7 +8,9 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libyaml-cpp-dev zlib1g-dev
           googletest libgtest-dev libbenchmark-dev ffmpeg gnuplot-nox
           clang libclang-rt-14-dev  # clang, libclang-rt: the fuzzers (scripts/fuzz.sh)
-          slurm-wlm munge)  # a one-node Slurm cluster for tests/slurm/test_slurm.sh (issue 10)
+          slurm-wlm munge  # a one-node Slurm cluster for tests/slurm/test_slurm.sh (issue 10)
+          libglfw3-dev libgl-dev  # firsthit view's window (issue 9; optional at build time)
+          xvfb xdotool libgl1-mesa-dri)  # its test: a virtual X server, keys, Mesa's software GL
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
