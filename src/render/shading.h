@@ -121,6 +121,7 @@ private:
     struct Lit {
         RayBatch<T> shadow;
         int hit[N];
+        Vec3<T> to_light[N];
         T n_dot_l[N];
         T intensity[N];
         BlockMask<T> blocked[N];
@@ -142,26 +143,20 @@ private:
             const SurfacePoint<T>& sp = w.point[k];
             const T n_dot_l = glm::dot(sp.normal, to_light);
             if (n_dot_l <= T(0)) continue;  // faces away: no diffuse, no specular
-            lit.hit[lit.shadow.size] = k;
-            lit.n_dot_l[lit.shadow.size] = n_dot_l;
-            lit.intensity[lit.shadow.size] = T(1);
+            const int j = lit.shadow.size;
+            lit.hit[j] = k;
+            lit.to_light[j] = to_light;
+            lit.n_dot_l[j] = n_dot_l;
+            lit.intensity[j] = T(1);
             lit.shadow.push({offset_origin(sp.point, sp.normal), to_light});
         }
         cast_shadows(lit, counts);
-        const size_t nm = scene_.materials.size();
-        for (int j = 0; j < lit.shadow.size; ++j) {
-            if (lit.blocked[j]) continue;
-            const int k = lit.hit[j];
-            const SurfacePoint<T>& sp = w.point[k];
-            local[k] += direct(scene_.directional_terms[l * nm + size_t(sp.material)], sp, to_light,
-                               w.view[k], lit.n_dot_l[j], lit.intensity[j]);
-        }
+        add_unblocked(w, lit, &scene_.directional_terms[l * scene_.materials.size()], local);
     }
 
     void add_spot(const Wave& w, size_t l, Color<T>* local, RayCounts& counts) const {
         const SpotLight<T>& spot = scene_.spot_lights[l];
         Lit lit;
-        Vec3<T> to_light[N];
         for (int k = 0; k < w.hits; ++k) {
             const SurfacePoint<T>& sp = w.point[k];
             const SpotRadiance<T> r = spot.radiance_at(sp.point);
@@ -172,18 +167,24 @@ private:
             lit.hit[j] = k;
             lit.n_dot_l[j] = n_dot_l;
             lit.intensity[j] = r.intensity;
-            to_light[j] = r.to_light;
+            lit.to_light[j] = r.to_light;
             // Blockers count only between the point and the light.
             lit.shadow.push({offset_origin(sp.point, sp.normal), r.to_light}, r.distance);
         }
         cast_shadows(lit, counts);
-        const size_t nm = scene_.materials.size();
+        add_unblocked(w, lit, &scene_.spot_terms[l * scene_.materials.size()], local);
+    }
+
+    // Diffuse and specular of one light at the hits its shadow rays reached.
+    // terms: the light's row of colour products, indexed by material.
+    void add_unblocked(const Wave& w, const Lit& lit, const LightTerms<T>* terms,
+                       Color<T>* local) const {
         for (int j = 0; j < lit.shadow.size; ++j) {
             if (lit.blocked[j]) continue;
             const int k = lit.hit[j];
             const SurfacePoint<T>& sp = w.point[k];
-            local[k] += direct(scene_.spot_terms[l * nm + size_t(sp.material)], sp, to_light[j],
-                               w.view[k], lit.n_dot_l[j], lit.intensity[j]);
+            local[k] += direct(terms[sp.material], sp, lit.to_light[j], w.view[k], lit.n_dot_l[j],
+                               lit.intensity[j]);
         }
     }
 

@@ -2,9 +2,8 @@
 // --shard layout (with or without --range), `frames` or `render --frame`.
 #include <gtest/gtest.h>
 
-#include <regex>
 
-#include "cli/run_command.h"
+#include "cli/small_movie.h"
 
 namespace fh::test {
 namespace {
@@ -14,26 +13,10 @@ namespace fs = std::filesystem;
 // A 48 x 40 copy of the report's scene (not square, not a multiple of the
 // tile size), 2 samples per pixel, 10 frames with both lights of Movie 1.
 fs::path movie_dir(const std::string& name) {
-    const fs::path dir = fresh_dir(name);
-    std::string scene = slurp(source_path("animations/scene.yaml"));
-    scene = std::regex_replace(scene, std::regex("width: 800"), "width: 48");
-    scene = std::regex_replace(scene, std::regex("height: 800"), "height: 40");
-    std::ofstream(dir / "scene.yaml") << scene;
-    std::ofstream(dir / "movie.yaml") << "scene: scene.yaml\ncamera: perspective\nlights: [ambient, spot]\n"
-                                         "fps: 10\nseconds: 1\n"
-                                         "animate:\n  view_point:\n    orbit: {center: [-10, -10, 16], "
-                                         "sin: [20, 0, 0], cos: [0, 0, 15]}\n"
-                                         "  look_at: {toward: [0, 0, 0]}\n"
-                                         "render: {samples_per_pixel: 2}\n";
-    return dir;
+    return small_movie(name, 48, 40, 10, "movie.yaml", "render: {samples_per_pixel: 2}\n");
 }
 
-std::vector<std::string> listing(const fs::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
+std::vector<std::string> listing(const fs::path& dir) { return files_in(dir); }
 
 void run_frames(const fs::path& dir, const fs::path& out, const std::string& extra) {
     const auto r = run_firsthit("frames " + (dir / "movie.yaml").string() + " --quiet --out " + out.string() + " " +

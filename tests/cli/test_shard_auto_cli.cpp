@@ -4,9 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <regex>
 
-#include "cli/run_command.h"
+#include "cli/small_movie.h"
 
 namespace fh::test {
 namespace {
@@ -14,27 +13,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // A 64x64 copy of the report's scene and a 12-frame orbit of it.
-fs::path tiny_movie(const std::string& name) {
-    const fs::path dir = fresh_dir(name);
-    std::string scene = slurp(source_path("animations/scene.yaml"));
-    scene = std::regex_replace(scene, std::regex("width: 800"), "width: 64");
-    scene = std::regex_replace(scene, std::regex("height: 800"), "height: 64");
-    std::ofstream(dir / "scene.yaml") << scene;
-    std::ofstream(dir / "tiny.yaml") << "scene: scene.yaml\ncamera: perspective\n"
-                                        "lights: [ambient, spot]\nfps: 12\nseconds: 1\n"
-                                        "animate:\n  view_point:\n    orbit: {center: [-10, -10, 16], "
-                                        "sin: [20, 0, 0], cos: [0, 0, 15]}\n"
-                                        "  look_at: {toward: [0, 0, 0]}\n";
-    return dir;
-}
+fs::path tiny_movie(const std::string& name) { return small_movie(name, 64, 64, 12, "tiny.yaml"); }
 
-std::vector<std::string> frame_files(const fs::path& dir) {
-    std::vector<std::string> names;
-    if (fs::is_directory(dir))
-        for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
+std::vector<std::string> frame_files(const fs::path& dir) { return files_in(dir); }
 
 // firsthit frames with exactly the scheduler variables `env` (VAR=value
 // words), whatever the environment ctest runs in.
