@@ -14,12 +14,14 @@ int run_bench(const Words& words);
 int run_frames(const Words& words);
 int run_info(const Words& words);
 int run_accuracy(const Words& words);
+int run_view(const Words& words);  // src/view/view_command.cpp (issue 9)
 
 extern const char* const kRenderHelp;
 extern const char* const kBenchHelp;
 extern const char* const kFramesHelp;
 extern const char* const kInfoHelp;
 extern const char* const kAccuracyHelp;
+extern const char* const kViewHelp;
 
 // Prints the command's help if words ask for it; true if it did.
 bool wants_help(const Words& words, const char* help);

@@ -19,6 +19,7 @@ usage:
   firsthit bench   FILE [--frame N] [--runs K] [--threads N] [--spp N] [--depth N]
   firsthit accuracy FILE [--frame N] [--csv OUT.csv] [--plot OUT.png]
   firsthit info    FILE
+  firsthit view    FILE [--frame N] [--camera NAME]
   firsthit --help | --version
 
 commands:
@@ -27,6 +28,8 @@ commands:
   bench    time one frame: median ms per frame and rays per second
   accuracy what each accuracy knob costs: error against a reference vs time
   info     what a scene or movie file holds
+  view     a window showing a frame: P switches cameras, arrows and Space
+           scrub and play a movie, S saves the shown frame (needs GLFW)
 
 FILE is a scene file or a movie file (a movie names its scene); see
 animations/scene.yaml and animations/movie1.yaml. 'firsthit COMMAND --help'
@@ -57,6 +60,7 @@ int dispatch(int argc, char** argv) {
     if (cmd == "bench") return run_bench(words);
     if (cmd == "info") return run_info(words);
     if (cmd == "accuracy") return run_accuracy(words);
+    if (cmd == "view") return run_view(words);
     throw UsageError("unknown command '" + cmd + "'; see 'firsthit --help'");
 }
 

@@ -1,0 +1,505 @@
+// firsthit view FILE: the report's window (issue 9). Shows a scene's or
+// movie's frame, refined progressively (a quarter-resolution image at once,
+// then full resolution); P switches between orthographic and perspective,
+// Left/Right/Home/End move through a movie, Space plays it at its fps, S saves
+// the shown frame, Q or Esc quits. Rendering runs on a background thread, so
+// the window always answers.
+//
+// Built only when CMake finds GLFW and OpenGL (FIRSTHIT_HAVE_VIEW); otherwise
+// `firsthit view` says how to enable it and exits 1.
+#include <iostream>
+
+#include "cli/commands.h"
+
+namespace fh {
+
+const char* const kViewHelp =
+    R"(usage: firsthit view FILE [options]
+
+Opens a window showing a frame of a scene or movie file, rendered at a quarter
+of the resolution at once, then at full resolution.
+
+  FILE               a scene file, or a movie file (which names its scene)
+  --camera NAME      scene files: the camera shown first (default: the first listed)
+  --frame N          movie files: the frame shown first (default 0)
+  --spp N, --depth N, --precision P, --adaptive, --aa-threshold X, --aa-samples N,
+  --no-prune         as for 'firsthit render' (the full-resolution image is the
+                     same as 'firsthit render' gives)
+  --threads N        worker threads (default: one per core)
+
+keys:
+  P                  switch camera projection: a scene file shows its next
+                     camera with the other projection (orthographic <->
+                     perspective); a movie keeps its camera path and flips
+                     the projection
+  Left / Right       previous / next frame (movies)
+  Home / End         first / last frame (movies)
+  Space              play / pause at the movie's fps (looping); frames follow
+                     the clock, the resolution drops while rendering cannot
+                     keep up
+  S                  save the shown frame at full resolution as
+                     view_STEM[_frameNNNN]_CAMERA.png in the current folder
+                     (pauses playback); prints the path on stdout
+  Q, Esc             quit
+
+The title shows the file, frame, camera, image size and ms per frame.
+Needs a display (X11 or Wayland); without one, exits 1 with one line.
+Needs firsthit built with GLFW and OpenGL (apt-get install libglfw3-dev libgl-dev).
+)";
+
+}  // namespace fh
+
+#ifndef FIRSTHIT_HAVE_VIEW
+
+namespace fh {
+
+int run_view(const Words& words) {
+    if (wants_help(words, kViewHelp)) return 0;
+    std::cerr << "firsthit: error: view is not built in; to enable it: apt-get install "
+                 "libglfw3-dev libgl-dev, then rebuild (cmake -S . -B build && cmake --build build)\n";
+    return 1;
+}
+
+}  // namespace fh
+
+#else  // FIRSTHIT_HAVE_VIEW
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <cstdlib>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+
+#include "anim/movie.h"
+#include "cli/job.h"
+#include "io/input_error.h"
+#include "io/movie_loader.h"
+#include "io/png_writer.h"
+#include "io/scene_loader.h"
+#include "render/render.h"
+#include "view/view_state.h"
+
+namespace fh {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr int kCoarseDivisor = 4;
+
+// What the render thread is asked for: the state to show, rendered first at
+// 1/divisor of the resolution and then, if refine, at full resolution.
+struct Request {
+    unsigned generation = 0;
+    view::ViewState state;
+    int divisor = 1;
+    bool refine = false;
+};
+
+struct Result {
+    unsigned generation = 0;
+    view::ViewState state;  // what the image shows
+    int divisor = 1;
+    Image image;
+    double ms = 0;
+};
+
+// One background thread rendering the latest request; a newer request
+// replaces one not yet started and ends a refinement before its next pass.
+class Renderer {
+public:
+    Renderer(const Scene& scene, const RenderSettings& settings, const Effects& effects, int threads)
+        : scene_(scene), settings_(settings), effects_(effects), pool_(threads),
+          thread_([this] { loop(); }) {}
+
+    ~Renderer() {
+        {
+            const std::lock_guard lock(mutex_);
+            stopping_ = true;
+        }
+        wake_.notify_all();
+        thread_.join();
+    }
+
+    void submit(Request r) {
+        {
+            const std::lock_guard lock(mutex_);
+            pending_ = std::move(r);
+            busy_ = true;
+        }
+        wake_.notify_all();
+    }
+
+    // The newest finished image, if one arrived since the last call.
+    std::optional<Result> take() {
+        const std::lock_guard lock(mutex_);
+        if (error_) std::rethrow_exception(error_);
+        std::optional<Result> r = std::move(result_);
+        result_.reset();
+        return r;
+    }
+
+    bool busy() const {
+        const std::lock_guard lock(mutex_);
+        return busy_;
+    }
+
+private:
+    void loop() {
+        std::unique_lock lock(mutex_);
+        for (;;) {
+            wake_.wait(lock, [&] { return stopping_ || pending_.has_value(); });
+            if (stopping_) return;
+            Request req = std::move(*pending_);
+            pending_.reset();
+            lock.unlock();
+            try {
+                render_passes(req);
+            } catch (...) {
+                lock.lock();
+                error_ = std::current_exception();
+                busy_ = false;
+                lock.unlock();
+                glfwPostEmptyEvent();
+                lock.lock();
+                continue;
+            }
+            lock.lock();
+            if (!pending_) busy_ = false;
+        }
+    }
+
+    void render_passes(const Request& req) {
+        const Camera full = req.state.camera();
+        int divisor = req.divisor;
+        for (;;) {
+            RenderSettings s = settings_;
+            if (divisor > 1) {  // a preview: one sample per pixel is enough
+                s.samples_per_pixel = 1;
+                s.adaptive = false;
+            }
+            FrameResult fr = render_frame(scene_, view::reduced(full, divisor), s, effects_, &pool_);
+            {
+                const std::lock_guard lock(mutex_);
+                result_ = Result{req.generation, req.state, divisor, std::move(fr.image), fr.render_ms};
+            }
+            glfwPostEmptyEvent();  // wake the window's event loop
+            if (!req.refine || divisor == 1) return;
+            {
+                const std::lock_guard lock(mutex_);
+                if (pending_ || stopping_) return;  // superseded
+            }
+            divisor = 1;
+        }
+    }
+
+    const Scene& scene_;
+    RenderSettings settings_;
+    Effects effects_;
+    ThreadPool pool_;
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    std::optional<Request> pending_;
+    std::optional<Result> result_;
+    std::exception_ptr error_;
+    bool busy_ = false;
+    bool stopping_ = false;
+    std::thread thread_;  // last: started once everything above exists
+};
+
+struct Glfw {
+    Glfw() {
+        if (!glfwInit()) {
+            const char* desc = nullptr;
+            glfwGetError(&desc);
+            std::string why = desc ? desc : "glfwInit failed";
+            while (!why.empty() && (why.back() == ' ' || why.back() == '.')) why.pop_back();
+            const char* d = std::getenv("DISPLAY");
+            const char* wl = std::getenv("WAYLAND_DISPLAY");
+            if ((!d || !*d) && (!wl || !*wl)) why = "DISPLAY is not set; " + why;
+            throw std::runtime_error("view needs a display (" + why +
+                                     "); set DISPLAY, or run under Xvfb: xvfb-run firsthit view FILE");
+        }
+    }
+    ~Glfw() { glfwTerminate(); }
+};
+
+class Viewer {
+public:
+    Viewer(view::ViewState state, const Scene& scene, const RenderSettings& settings,
+           const Effects& effects, int threads)
+        : state_(std::move(state)), renderer_(scene, settings, effects, threads) {}
+
+    int run() {
+        const Camera cam = state_.camera();
+        int w = cam.width, h = cam.height;
+        if (const GLFWvidmode* mode = glfwGetVideoMode(glfwGetPrimaryMonitor())) {
+            // Fit on the screen, keeping the aspect ratio.
+            const double k = std::min({1.0, 0.9 * mode->width / w, 0.9 * mode->height / h});
+            w = std::max(1, int(w * k));
+            h = std::max(1, int(h * k));
+        }
+        if (const int side = std::max(w, h); side < 256) {  // tiny images: whole-pixel zoom
+            const int zoom = (256 + side - 1) / side;
+            w *= zoom;
+            h *= zoom;
+        }
+        glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+        window_ = glfwCreateWindow(w, h, "firsthit view", nullptr, nullptr);
+        if (!window_) {
+            const char* desc = nullptr;
+            glfwGetError(&desc);
+            throw std::runtime_error(std::string("view could not open an OpenGL window (") +
+                                     (desc ? desc : "unknown reason") + ")");
+        }
+        glfwSetWindowUserPointer(window_, this);
+        glfwSetKeyCallback(window_, [](GLFWwindow* win, int key, int, int action, int) {
+            static_cast<Viewer*>(glfwGetWindowUserPointer(win))->on_key(key, action);
+        });
+        glfwSetWindowRefreshCallback(window_, [](GLFWwindow* win) {
+            static_cast<Viewer*>(glfwGetWindowUserPointer(win))->redraw_ = true;
+        });
+        glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* win, int, int) {
+            static_cast<Viewer*>(glfwGetWindowUserPointer(win))->redraw_ = true;
+        });
+        glfwMakeContextCurrent(window_);
+        glfwSwapInterval(0);
+        glGenTextures(1, &texture_);
+
+        request_refined();
+        while (!glfwWindowShouldClose(window_)) {
+            glfwWaitEventsTimeout(playing_ ? 0.002 : 0.1);
+            if (playing_) advance_playback();
+            if (auto r = renderer_.take()) show(std::move(*r));
+            if (redraw_) draw();
+            maybe_save();
+        }
+        glDeleteTextures(1, &texture_);
+        glfwDestroyWindow(window_);
+        window_ = nullptr;
+        return 0;
+    }
+
+private:
+    void on_key(int key, int action) {
+        if (action == GLFW_RELEASE) return;
+        const bool repeat = action == GLFW_REPEAT;
+        bool changed = false;
+        switch (key) {
+        case GLFW_KEY_Q:
+        case GLFW_KEY_ESCAPE:
+            glfwSetWindowShouldClose(window_, GLFW_TRUE);
+            return;
+        case GLFW_KEY_P:
+            if (!repeat) changed = state_.switch_camera();
+            break;
+        case GLFW_KEY_LEFT: changed = state_.step(-1); break;
+        case GLFW_KEY_RIGHT: changed = state_.step(+1); break;
+        case GLFW_KEY_HOME: changed = state_.home(); break;
+        case GLFW_KEY_END: changed = state_.end(); break;
+        case GLFW_KEY_SPACE:
+            if (!repeat) toggle_play();
+            return;
+        case GLFW_KEY_S:
+            if (repeat) return;
+            save_requested_ = true;
+            if (playing_) stop_playing();  // save the frame shown now, refined
+            return;
+        default: return;
+        }
+        if (!changed) return;
+        if (playing_) {  // a step while playing restarts the clock from there
+            play_start_ = Clock::now();
+            play_start_frame_ = state_.frame();
+            play_requested_frame_ = -1;
+        } else {
+            request_refined();
+        }
+    }
+
+    void toggle_play() {
+        if (!state_.is_movie() || state_.frame_count() < 2) return;
+        if (playing_) {
+            stop_playing();
+            return;
+        }
+        playing_ = true;
+        play_start_ = Clock::now();
+        play_start_frame_ = state_.frame();
+        play_requested_frame_ = -1;
+        update_title();
+    }
+
+    void stop_playing() {
+        playing_ = false;
+        // Stay on the frame last shown, then refine it.
+        if (shown_) state_.set_frame(shown_->state.frame());
+        request_refined();
+    }
+
+    // Pick the frame from the clock; render it when the renderer is free.
+    void advance_playback() {
+        const double elapsed = std::chrono::duration<double>(Clock::now() - play_start_).count();
+        state_.set_frame(view::frame_at(play_start_frame_, elapsed, state_.fps(), state_.frame_count()));
+        if (renderer_.busy() || (state_.frame() == play_requested_frame_ &&
+                                 play_requested_camera_ == state_.camera().name))
+            return;
+        play_requested_frame_ = state_.frame();
+        play_requested_camera_ = state_.camera().name;
+        renderer_.submit(Request{++generation_, state_, play_divisor_, false});
+    }
+
+    void request_refined() {
+        const Camera c = state_.camera();
+        const int d = std::min(c.width, c.height) >= 4 * kCoarseDivisor ? kCoarseDivisor : 1;
+        renderer_.submit(Request{++generation_, state_, d, true});
+    }
+
+    void show(Result r) {
+        if (!playing_ && r.generation != generation_) return;  // superseded
+        if (playing_ && r.divisor == play_divisor_)
+            play_divisor_ = view::adapt_divisor(play_divisor_, r.ms, state_.fps());
+        glBindTexture(GL_TEXTURE_2D, texture_);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, r.image.width, r.image.height, 0, GL_RGB,
+                     GL_UNSIGNED_BYTE, r.image.rgb.data());
+        shown_ = std::move(r);
+        update_title();
+        redraw_ = true;
+    }
+
+    void update_title() {
+        if (!shown_) return;
+        const std::string t = shown_->state.title(shown_->image.width, shown_->image.height,
+                                                  shown_->ms, playing_);
+        glfwSetWindowTitle(window_, t.c_str());
+    }
+
+    // The image fills the window, keeping its aspect ratio (bars around it).
+    void draw() {
+        redraw_ = false;
+        int fw = 0, fh = 0;
+        glfwGetFramebufferSize(window_, &fw, &fh);
+        glViewport(0, 0, fw, fh);
+        glClearColor(0.15f, 0.15f, 0.15f, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        if (shown_ && fw > 0 && fh > 0) {
+            const Camera c = shown_->state.camera();
+            const double k = std::min(double(fw) / c.width, double(fh) / c.height);
+            const int vw = std::max(1, int(std::lround(c.width * k)));
+            const int vh = std::max(1, int(std::lround(c.height * k)));
+            glViewport((fw - vw) / 2, (fh - vh) / 2, vw, vh);
+            glMatrixMode(GL_PROJECTION);
+            glLoadIdentity();
+            glOrtho(0, 1, 1, 0, -1, 1);  // y down: row 0 of the image at the top
+            glMatrixMode(GL_MODELVIEW);
+            glLoadIdentity();
+            glEnable(GL_TEXTURE_2D);
+            glBindTexture(GL_TEXTURE_2D, texture_);
+            glColor3f(1, 1, 1);
+            glBegin(GL_QUADS);
+            glTexCoord2f(0, 0); glVertex2f(0, 0);
+            glTexCoord2f(1, 0); glVertex2f(1, 0);
+            glTexCoord2f(1, 1); glVertex2f(1, 1);
+            glTexCoord2f(0, 1); glVertex2f(0, 1);
+            glEnd();
+            glDisable(GL_TEXTURE_2D);
+        }
+        glfwSwapBuffers(window_);
+    }
+
+    // S: once the full-resolution image of what is shown is on screen.
+    void maybe_save() {
+        if (!save_requested_ || playing_ || !shown_ || shown_->divisor != 1 ||
+            shown_->generation != generation_ || redraw_)
+            return;
+        save_requested_ = false;
+        const std::string path = shown_->state.save_name();
+        write_png(path, shown_->image);
+        std::cout << path << std::endl;
+    }
+
+    view::ViewState state_;
+    Renderer renderer_;
+    GLFWwindow* window_ = nullptr;
+    GLuint texture_ = 0;
+    std::optional<Result> shown_;
+    unsigned generation_ = 0;
+    bool redraw_ = true;
+    bool save_requested_ = false;
+    bool playing_ = false;
+    Clock::time_point play_start_;
+    int play_start_frame_ = 0;
+    int play_requested_frame_ = -1;
+    std::string play_requested_camera_;
+    int play_divisor_ = 1;
+};
+
+}  // namespace
+
+int run_view(const Words& words) {
+    if (wants_help(words, kViewHelp)) return 0;
+    auto spec = job_flags();
+    spec.push_back({"--threads"});
+    const Args args = Args::parse("view", words, spec);
+    if (args.positional().size() != 1)
+        throw UsageError("expected one FILE (a scene or movie file), got " +
+                         std::to_string(args.positional().size()));
+    const std::string file = args.positional()[0];
+    const int threads = args.integer("--threads", 0, 0, 1024);
+
+    // Bad input is found (status 2) before a window is asked for.
+    std::optional<Movie> movie;
+    std::optional<Scene> scene;
+    std::optional<view::ViewState> state;
+    if (is_movie_file(file)) {
+        if (args.has("--camera"))
+            throw UsageError("--camera applies to scene files; " + file +
+                             " is a movie (its camera is set in the file; P flips its projection)");
+        movie = load_movie(file);
+        try {
+            warn_parallel_up(file, check_camera_path(*movie));
+        } catch (const std::invalid_argument& e) {
+            throw InputError(file, e.what());
+        }
+        state.emplace(file, *movie, args.integer("--frame", 0, 0, movie->frame_count() - 1));
+    } else {
+        if (args.has("--frame"))
+            throw UsageError("--frame applies to movie files; " + file + " is a scene");
+        scene = load_scene(file);
+        int index = 0;
+        if (const auto name = args.value("--camera")) {
+            std::vector<std::string> names;
+            for (const auto& c : scene->cameras) names.push_back(c.name);
+            const auto it = std::find(names.begin(), names.end(), *name);
+            if (it == names.end()) {
+                const std::string near = closest_match(*name, names);
+                throw UsageError("no camera '" + *name + "' in " + file +
+                                 (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+            }
+            index = int(it - names.begin());
+        }
+        state.emplace(file, *scene, index);
+    }
+    const Scene& s = movie ? movie->scene : *scene;
+    RenderSettings settings = s.render;
+    apply_quality_flags(args, settings);
+
+    const Glfw glfw;
+    Viewer viewer(*state, s, settings, s.effects, threads);
+    return viewer.run();
+}
+
+}  // namespace fh
+
+#endif  // FIRSTHIT_HAVE_VIEW
