@@ -1,0 +1,139 @@
+// The view's background render thread: renders the latest request (a view
+// state, first coarse, then at full resolution) while the window keeps
+// answering; a newer request replaces one not yet started and ends a
+// refinement before its next pass.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "render/render.h"
+#include "view/view_state.h"
+
+namespace fh::view {
+
+// What the render thread is asked for: the state to show, rendered first at
+// 1/divisor of the resolution and then, if refine, at full resolution.
+struct Request {
+    unsigned generation = 0;
+    ViewState state;
+    int divisor = 1;
+    bool refine = false;
+};
+
+struct Result {
+    unsigned generation = 0;
+    ViewState state;  // what the image shows
+    int divisor = 1;
+    Image image;
+    double ms = 0;
+};
+
+// One background thread rendering the latest request; a newer request
+// replaces one not yet started and ends a refinement before its next pass.
+class Renderer {
+public:
+    Renderer(const Scene& scene, const RenderSettings& settings, const Effects& effects, int threads)
+        : scene_(scene), settings_(settings), effects_(effects), pool_(threads),
+          thread_([this] { loop(); }) {}
+
+    ~Renderer() {
+        {
+            const std::lock_guard lock(mutex_);
+            stopping_ = true;
+        }
+        wake_.notify_all();
+        thread_.join();
+    }
+
+    void submit(Request r) {
+        {
+            const std::lock_guard lock(mutex_);
+            pending_ = std::move(r);
+            busy_ = true;
+        }
+        wake_.notify_all();
+    }
+
+    // The newest finished image, if one arrived since the last call.
+    std::optional<Result> take() {
+        const std::lock_guard lock(mutex_);
+        if (error_) std::rethrow_exception(error_);
+        std::optional<Result> r = std::move(result_);
+        result_.reset();
+        return r;
+    }
+
+    bool busy() const {
+        const std::lock_guard lock(mutex_);
+        return busy_;
+    }
+
+private:
+    void loop() {
+        std::unique_lock lock(mutex_);
+        for (;;) {
+            wake_.wait(lock, [&] { return stopping_ || pending_.has_value(); });
+            if (stopping_) return;
+            Request req = std::move(*pending_);
+            pending_.reset();
+            lock.unlock();
+            try {
+                render_passes(req);
+            } catch (...) {
+                lock.lock();
+                error_ = std::current_exception();
+                busy_ = false;
+                lock.unlock();
+                glfwPostEmptyEvent();
+                lock.lock();
+                continue;
+            }
+            lock.lock();
+            if (!pending_) busy_ = false;
+        }
+    }
+
+    void render_passes(const Request& req) {
+        const Camera full = req.state.camera();
+        int divisor = req.divisor;
+        for (;;) {
+            RenderSettings s = settings_;
+            if (divisor > 1) {  // a preview: one sample per pixel is enough
+                s.samples_per_pixel = 1;
+                s.adaptive = false;
+            }
+            FrameResult fr = render_frame(scene_, view::reduced(full, divisor), s, effects_, &pool_);
+            {
+                const std::lock_guard lock(mutex_);
+                result_ = Result{req.generation, req.state, divisor, std::move(fr.image), fr.render_ms};
+            }
+            glfwPostEmptyEvent();  // wake the window's event loop
+            if (!req.refine || divisor == 1) return;
+            {
+                const std::lock_guard lock(mutex_);
+                if (pending_ || stopping_) return;  // superseded
+            }
+            divisor = 1;
+        }
+    }
+
+    const Scene& scene_;
+    RenderSettings settings_;
+    Effects effects_;
+    ThreadPool pool_;
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    std::optional<Request> pending_;
+    std::optional<Result> result_;
+    std::exception_ptr error_;
+    bool busy_ = false;
+    bool stopping_ = false;
+    std::thread thread_;  // last: started once everything above exists
+};
+
+}  // namespace fh::view
