@@ -51,7 +51,11 @@ int run_bench(const Words& words) {
               << "ms_per_frame: " << median << "\n"
               << "ms_min: " << ms.front() << "\n"
               << "ms_max: " << ms.back() << "\n"
-              << "rays_per_second: " << double(r.counts.total()) / (median / 1000.0) << "\n";
+              << "rays_per_second: " << double(r.counts.total()) / (median / 1000.0) << "\n"
+              << "rays_per_second.primary: " << double(r.counts.primary) / (median / 1000.0) << "\n"
+              << "rays_per_second.shadow: " << double(r.counts.shadow) / (median / 1000.0) << "\n"
+              << "rays_per_second.reflection: " << double(r.counts.reflection) / (median / 1000.0)
+              << "\n";
     print_plan(std::cout, r.plan);
     print_counts(std::cout, r.counts);
     return 0;

@@ -38,24 +38,30 @@ void render_pixels(const S& shader, const CameraRays<T>& rays, const PixelRef* p
     RayBatch<T> batch;
     Color<T> colour[kBatch];
     int pixel_of[kBatch];  // which listed pixel each ray of the batch samples
+    T sample_x[kBatch], sample_y[kBatch];
+    int n = 0;
     auto flush = [&] {
-        const int n = batch.size;
+        rays.generate(sample_x, sample_y, n, batch.ox, batch.oy, batch.oz, batch.dx, batch.dy,
+                      batch.dz);
+        for (int i = 0; i < n; ++i) batch.t_max[i] = kInfinity<T>;
+        batch.size = n;
         counts.primary += std::uint64_t(n);
         shader.trace(batch, colour, counts);  // leaves batch holding its last wave
         for (int i = 0; i < n; ++i) sum[pixel_of[i]] += Color<double>(clamped(colour[i], counts));
-        batch.size = 0;
+        n = 0;
     };
     for (int p = 0; p < count; ++p) {
         sum[p] = Color<double>(0);
         const int x = pixels[p].x, y = pixels[p].y;
         for (int s = 0; s < spp; ++s) {
             const SampleOffset o = sample_offset(x, y, s, grid);
-            pixel_of[batch.size] = p;
-            batch.push(rays.generate(T(x + o.x), T(y + o.y)));
-            if (batch.full()) flush();
+            pixel_of[n] = p;
+            sample_x[n] = T(x + o.x);
+            sample_y[n] = T(y + o.y);
+            if (++n == kBatch) flush();
         }
     }
-    if (batch.size > 0) flush();
+    if (n > 0) flush();
     for (int p = 0; p < count; ++p) {
         const Color<double> mean = sum[p] / double(spp);
         std::uint8_t* px = image.pixel(pixels[p].x, pixels[p].y);

@@ -61,14 +61,40 @@ public:
     }
 
     Ray<T> generate(T px, T py) const {
-        const T x = x0_ + dx_ * px;
-        const T y = y0_ - dy_ * py;
-        const Vec3<T> offset = x * u_ + y * v_;
-        if (perspective_) return {eye_, glm::normalize(forward_ + offset)};
-        return {eye_ + offset, forward_};
+        return perspective_ ? perspective_ray(px, py) : orthographic_ray(px, py);
+    }
+
+    // Rays for n pixel positions, written into structure-of-arrays storage:
+    // one branch-free loop per projection, which vectorises (the scalar
+    // normalize per camera ray was a chain of divisions). The same arithmetic
+    // as generate(), so the same rays.
+    void generate(const T* px, const T* py, int n, T* ox, T* oy, T* oz, T* dx, T* dy, T* dz) const {
+        auto store = [&](int i, const Ray<T>& r) {
+            ox[i] = r.origin.x;
+            oy[i] = r.origin.y;
+            oz[i] = r.origin.z;
+            dx[i] = r.direction.x;
+            dy[i] = r.direction.y;
+            dz[i] = r.direction.z;
+        };
+        if (perspective_) {
+            for (int i = 0; i < n; ++i) store(i, perspective_ray(px[i], py[i]));
+        } else {
+            for (int i = 0; i < n; ++i) store(i, orthographic_ray(px[i], py[i]));
+        }
     }
 
 private:
+    FH_HOT_INLINE Vec3<T> offset(T px, T py) const {
+        return (x0_ + dx_ * px) * u_ + (y0_ - dy_ * py) * v_;
+    }
+    FH_HOT_INLINE Ray<T> perspective_ray(T px, T py) const {
+        return {eye_, glm::normalize(forward_ + offset(px, py))};
+    }
+    FH_HOT_INLINE Ray<T> orthographic_ray(T px, T py) const {
+        return {eye_ + offset(px, py), forward_};
+    }
+
     bool perspective_ = true;
     Vec3<T> eye_, u_, v_, forward_;
     T x0_, y0_, dx_, dy_;
