@@ -47,9 +47,15 @@ public:
 
     // "FILE:LINE:COLUMN: error: WHAT", or "FILE: error: WHAT" without a position.
     std::string formatted() const {
+        // Appends rather than operator+ on temporaries: GCC 12 warns falsely
+        // (-Wrestrict) about the inlined copies of the latter.
         std::string s = printable(file_, 4096);
-        if (line_ > 0) s += ":" + std::to_string(line_) + ":" + std::to_string(column_);
-        return s + ": error: " + what();
+        if (line_ > 0) {
+            s.append(":").append(std::to_string(line_));
+            s.append(":").append(std::to_string(column_));
+        }
+        s.append(": error: ").append(what());
+        return s;
     }
 
 private:
