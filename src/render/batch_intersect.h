@@ -44,7 +44,7 @@ template <typename T>
 bool any_meets(const TriangleCluster<T>& c, const RayBatch<T>& rays) {
     // A map, then a scan: the map vectorises like any other shape loop.
     T t[RayBatch<T>::kCapacity];
-    for (int i = 0; i < rays.size; ++i) t[i] = c.bound.intersect(rays.ray(i), T(0), kInfinity<T>);
+    for (int i = 0; i < rays.size; ++i) t[i] = c.exit_t(rays.ray(i));
     for (int i = 0; i < rays.size; ++i)
         if (t[i] < kInfinity<T>) return true;
     return false;

@@ -49,7 +49,7 @@ std::vector<TriangleCluster<T>> clusters_of(const std::vector<Triangle<double>>&
         for (int i = first; i < first + count; ++i)
             corners(*tris[size_t(i)], [&](const dvec3& p) { r = std::max(r, glm::length(p - center)); });
         r = r * (1 + 1e-4) + 1e-4 * max_abs_component(center) + 1e-30;
-        out.push_back({Sphere<T>{Vec3<T>(center), T(r), -1}, first, count});
+        out.push_back({Vec3<T>(center), T(r * r), first, count});
     }
     return out;
 }

@@ -25,8 +25,22 @@ struct LightTerms {
 // 16 x 16 tile mostly does not see the report's tetrahedron at all.
 template <typename T>
 struct TriangleCluster {
-    Sphere<T> bound;  // radius padded so rounding never culls a real hit
+    Vec3<T> center;
+    T radius2;  // padded so rounding never culls a real hit
     int first, count;
+
+    // Where the ray leaves the bounding sphere, or infinity if it never meets
+    // it ahead of its origin. A plain test is enough for a padded bound (the
+    // robust one of Sphere costs more), and it is branch-free, so a loop of
+    // it over a batch vectorises.
+    FH_HOT_INLINE T exit_t(const Ray<T>& ray) const {
+        const Vec3<T> f = ray.origin - center;
+        const T b = -glm::dot(f, ray.direction);
+        const Vec3<T> closest = f + b * ray.direction;
+        const T disc = radius2 - glm::dot(closest, closest);
+        const T far = b + std::sqrt(std::max(disc, T(0)));
+        return ((disc >= T(0)) & (far > T(0))) ? far : kInfinity<T>;
+    }
 };
 inline constexpr int kClusterSize = 16;
 
