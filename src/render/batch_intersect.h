@@ -7,7 +7,7 @@
 #include <type_traits>
 
 #include "render/flat_scene.h"
-#include "render/ray_batch.h"
+#include "core/ray_batch.h"
 
 namespace fh {
 
@@ -66,6 +66,18 @@ void closest_hits(const FlatScene<T>& scene, const RayBatch<T>& rays, T* t, std:
         for (int k = c.first; k < c.first + c.count; ++k)
             detail::nearest_of(scene.triangles[size_t(k)], id + k, rays, t, prim);
     }
+}
+
+// The nearest hit of one ray (tests, the viewer): a batch of one, so the same
+// loops as every other ray.
+template <typename T>
+Hit<T> closest_hit(const FlatScene<T>& scene, const Ray<T>& ray) {
+    RayBatch<T> one;
+    one.push(ray);
+    T t;
+    std::int32_t prim;
+    closest_hits(scene, one, &t, &prim);
+    return prim == kNoHit ? Hit<T>{} : scene.hit_of(t, prim);
 }
 
 // blocked[i]: some surface lies in (0, t_max[i]) along ray i.

@@ -22,14 +22,12 @@ LightTerms<T> terms(const Material<double>& m, const dvec3& light_color, double 
     return t;
 }
 
-// Bounding spheres of consecutive runs of the (non-degenerate) triangles,
+// Bounding spheres of consecutive runs of the triangles the frame keeps,
 // computed in double and padded by a relative 1e-4 so that no rounding in
 // the tracer's precision can cull a ray that hits a triangle.
 template <typename T>
-std::vector<TriangleCluster<T>> clusters_of(const std::vector<Triangle<double>>& all, int kept) {
-    std::vector<const Triangle<double>*> tris;
-    for (const auto& t : all)
-        if (t.normal != dvec3(0)) tris.push_back(&t);
+std::vector<TriangleCluster<T>> clusters_of(const std::vector<const Triangle<double>*>& tris) {
+    const int kept = int(tris.size());
     std::vector<TriangleCluster<T>> out;
     for (int first = 0; first < kept; first += kClusterSize) {
         const int count = std::min(kClusterSize, kept - first);
@@ -65,14 +63,16 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
         f.spheres.push_back({Vec3<T>(s.center), T(s.radius), s.material});
     for (const auto& p : scene.planes)
         f.planes.push_back({Vec3<T>(p.normal), T(p.distance), p.material});
+    std::vector<const Triangle<double>*> kept;
     for (const auto& t : scene.triangles) {
         // A triangle without area can never be hit: leave it out of the loop.
         if (t.normal == dvec3(0)) continue;
+        kept.push_back(&t);
         f.triangles.push_back({Vec3<T>(t.v0), Vec3<T>(t.e1), Vec3<T>(t.e2), Vec3<T>(t.normal),
                                t.material});
     }
+    f.clusters = clusters_of<T>(kept);
     for (const auto& m : scene.materials) f.materials.push_back(cast<T>(m));
-    f.clusters = clusters_of<T>(scene.triangles, int(f.triangles.size()));
 
     // A light that is off but simulated anyway (plan not pruned) shines with 0.
     auto intensity = [](const auto& l) { return l.on ? l.intensity : 0.0; };

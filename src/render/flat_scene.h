@@ -49,7 +49,7 @@ struct FlatScene {
     std::vector<Sphere<T>> spheres;
     std::vector<Plane<T>> planes;
     std::vector<Triangle<T>> triangles;
-    std::vector<TriangleCluster<T>> clusters;  // covering triangles in order
+    std::vector<TriangleCluster<T>> clusters;  // covering the triangles in order
     std::vector<Material<T>> materials;
     std::vector<Color<T>> ambient_terms;  // per material
     std::vector<DirectionalLight<T>> directional_lights;
@@ -60,35 +60,6 @@ struct FlatScene {
 
     // Only what the plan simulates: lights it uses, terms of its effects.
     static FlatScene build(const Scene& scene, const EffectPlan& plan);
-
-    // Nearest surface with t > 0 along the ray.
-    Hit<T> closest(const Ray<T>& ray) const {
-        Hit<T> hit;
-        for (int i = 0; i < int(spheres.size()); ++i) {
-            const T t = spheres[i].intersect(ray, T(0), hit.t);
-            if (t < hit.t) hit = {t, ShapeKind::sphere, i};
-        }
-        for (int i = 0; i < int(planes.size()); ++i) {
-            const T t = planes[i].intersect(ray, T(0), hit.t);
-            if (t < hit.t) hit = {t, ShapeKind::plane, i};
-        }
-        for (int i = 0; i < int(triangles.size()); ++i) {
-            const T t = triangles[i].intersect(ray, T(0), hit.t);
-            if (t < hit.t) hit = {t, ShapeKind::triangle, i};
-        }
-        return hit;
-    }
-
-    // Is any surface in (0, t_max) along the ray? Stops at the first one.
-    bool occluded(const Ray<T>& ray, T t_max) const {
-        for (const auto& s : spheres)
-            if (s.intersect(ray, T(0), t_max) < t_max) return true;
-        for (const auto& p : planes)
-            if (p.intersect(ray, T(0), t_max) < t_max) return true;
-        for (const auto& tr : triangles)
-            if (tr.intersect(ray, T(0), t_max) < t_max) return true;
-        return false;
-    }
 
     // The hit of a batch intersection: prim numbers spheres, then planes,
     // then triangles (render/batch_intersect.h).

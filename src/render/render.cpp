@@ -41,10 +41,7 @@ void render_pixels(const S& shader, const CameraRays<T>& rays, const PixelRef* p
     T sample_x[kBatch], sample_y[kBatch];
     int n = 0;
     auto flush = [&] {
-        rays.generate(sample_x, sample_y, n, batch.ox, batch.oy, batch.oz, batch.dx, batch.dy,
-                      batch.dz);
-        for (int i = 0; i < n; ++i) batch.t_max[i] = kInfinity<T>;
-        batch.size = n;
+        rays.generate(sample_x, sample_y, n, batch);
         counts.primary += std::uint64_t(n);
         shader.trace(batch, colour, counts);  // leaves batch holding its last wave
         for (int i = 0; i < n; ++i) sum[pixel_of[i]] += Color<double>(clamped(colour[i], counts));

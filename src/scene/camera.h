@@ -10,7 +10,7 @@
 
 #include <string>
 
-#include "core/ray.h"
+#include "core/ray_batch.h"
 
 namespace fh {
 
@@ -64,24 +64,16 @@ public:
         return perspective_ ? perspective_ray(px, py) : orthographic_ray(px, py);
     }
 
-    // Rays for n pixel positions, written into structure-of-arrays storage:
-    // one branch-free loop per projection, which vectorises (the scalar
-    // normalize per camera ray was a chain of divisions). The same arithmetic
-    // as generate(), so the same rays.
-    void generate(const T* px, const T* py, int n, T* ox, T* oy, T* oz, T* dx, T* dy, T* dz) const {
-        auto store = [&](int i, const Ray<T>& r) {
-            ox[i] = r.origin.x;
-            oy[i] = r.origin.y;
-            oz[i] = r.origin.z;
-            dx[i] = r.direction.x;
-            dy[i] = r.direction.y;
-            dz[i] = r.direction.z;
-        };
+    // The camera rays of n pixel positions, as the batch's first n rays: one
+    // branch-free loop per projection, which vectorises (a scalar normalize
+    // per camera ray is a chain of divisions). Same arithmetic as generate().
+    void generate(const T* px, const T* py, int n, RayBatch<T>& out) const {
         if (perspective_) {
-            for (int i = 0; i < n; ++i) store(i, perspective_ray(px[i], py[i]));
+            for (int i = 0; i < n; ++i) out.set(i, perspective_ray(px[i], py[i]));
         } else {
-            for (int i = 0; i < n; ++i) store(i, orthographic_ray(px[i], py[i]));
+            for (int i = 0; i < n; ++i) out.set(i, orthographic_ray(px[i], py[i]));
         }
+        out.size = n;
     }
 
 private:

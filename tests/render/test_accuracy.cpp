@@ -7,6 +7,7 @@
 
 #include "io/scene_loader.h"
 #include "render/adaptive.h"
+#include "render/batch_intersect.h"
 #include "render/image_compare.h"
 #include "render/render.h"
 
@@ -81,7 +82,7 @@ TEST(Accuracy, AdaptiveSpendsSamplesOnlyAtEdges) {
 bool glazed_at(const Scene& s, int x, int y) {
     const auto flat = FlatScene<double>::build(s, plan_effects(s, s.effects, 5));
     const Ray<double> ray = CameraRays<double>(s.cameras.front()).generate(x + 0.5, y + 0.5);
-    const Hit<double> hit = flat.closest(ray);
+    const Hit<double> hit = closest_hit(flat, ray);
     return hit.found() && flat.materials[size_t(flat.surface(ray, hit).material)].glazed;
 }
 

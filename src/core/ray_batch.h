@@ -24,16 +24,17 @@ struct RayBatch {
 
     bool full() const { return size == kCapacity; }
 
-    void push(const Ray<T>& r, T limit = kInfinity<T>) {
-        ox[size] = r.origin.x;
-        oy[size] = r.origin.y;
-        oz[size] = r.origin.z;
-        dx[size] = r.direction.x;
-        dy[size] = r.direction.y;
-        dz[size] = r.direction.z;
-        t_max[size] = limit;
-        ++size;
+    FH_HOT_INLINE void set(int i, const Ray<T>& r, T limit = kInfinity<T>) {
+        ox[i] = r.origin.x;
+        oy[i] = r.origin.y;
+        oz[i] = r.origin.z;
+        dx[i] = r.direction.x;
+        dy[i] = r.direction.y;
+        dz[i] = r.direction.z;
+        t_max[i] = limit;
     }
+
+    void push(const Ray<T>& r, T limit = kInfinity<T>) { set(size++, r, limit); }
 
     FH_HOT_INLINE Ray<T> ray(int i) const { return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}}; }
 };
