@@ -13,6 +13,7 @@
 
 #include "cli/commands.h"
 #include "cli/job.h"
+#include "cli/stats_output.h"
 #include "io/input_error.h"
 #include "render/image_compare.h"
 #include "render/render.h"
@@ -49,11 +50,6 @@ struct Row {
     ImageError error;     // against the reference
     ImageError isolated;  // depth and precision rows: against a 1-sample reference
 };
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
-}
 
 std::string number(double v) {
     if (std::isinf(v)) return "inf";

@@ -38,9 +38,8 @@ int run_bench(const Words& words) {
         r = render_frame(job.scene, job.camera, job.settings, job.effects, &pool);
         ms.push_back(r.render_ms);
     }
-    std::sort(ms.begin(), ms.end());
-    const double median = ms.size() % 2 ? ms[ms.size() / 2]
-                                        : (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]) / 2;
+    const double ms_median = median(ms);
+    const auto [ms_min, ms_max] = std::minmax_element(ms.begin(), ms.end());
     std::cout << "file: " << job.file << "\n";
     if (job.frame >= 0) std::cout << "frame: " << job.frame << "\n";
     std::cout << "width: " << job.camera.width << "\n"
@@ -48,13 +47,13 @@ int run_bench(const Words& words) {
               << "precision: " << precision_name(job.settings.precision) << "\n"
               << "threads: " << pool.size() << "\n"
               << "runs: " << runs << "\n"
-              << "ms_per_frame: " << median << "\n"
-              << "ms_min: " << ms.front() << "\n"
-              << "ms_max: " << ms.back() << "\n"
-              << "rays_per_second: " << double(r.counts.total()) / (median / 1000.0) << "\n"
-              << "rays_per_second.primary: " << double(r.counts.primary) / (median / 1000.0) << "\n"
-              << "rays_per_second.shadow: " << double(r.counts.shadow) / (median / 1000.0) << "\n"
-              << "rays_per_second.reflection: " << double(r.counts.reflection) / (median / 1000.0)
+              << "ms_per_frame: " << ms_median << "\n"
+              << "ms_min: " << *ms_min << "\n"
+              << "ms_max: " << *ms_max << "\n"
+              << "rays_per_second: " << double(r.counts.total()) / (ms_median / 1000.0) << "\n"
+              << "rays_per_second.primary: " << double(r.counts.primary) / (ms_median / 1000.0) << "\n"
+              << "rays_per_second.shadow: " << double(r.counts.shadow) / (ms_median / 1000.0) << "\n"
+              << "rays_per_second.reflection: " << double(r.counts.reflection) / (ms_median / 1000.0)
               << "\n";
     print_plan(std::cout, r.plan);
     print_counts(std::cout, r.counts);

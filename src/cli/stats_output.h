@@ -1,12 +1,20 @@
 // `key: value` lines on stdout, the form --stats and bench print.
 #pragma once
 
+#include <algorithm>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "render/render.h"
 
 namespace fh {
+
+// The median of timings: what bench and accuracy report.
+inline double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
+}
 
 inline void print_counts(std::ostream& out, const RayCounts& c) {
     out << "rays.primary: " << c.primary << "\n"
