@@ -165,20 +165,27 @@ TEST(InterruptCli, SigintAndSigtermStopWithinASecondAndResumeCompletesThem) {
     }
 }
 
+// `frames` on the movie in dir with 2 threads, returned once its workers run:
+// the signals are taken over before the first thread starts, so once there
+// are threads a signal no longer kills the process outright.
+Background start_slow_frames(const fs::path& dir, const fs::path& out) {
+    const Background b = spawn_firsthit({"frames", (dir / "movie.yaml").string(), "--quiet", "--threads", "2",
+                                         "--out", out.string()},
+                                        dir);
+    if (b.pid <= 0) return b;
+    const auto end = std::chrono::steady_clock::now() + 30s * kSlowdown;
+    while (thread_count(b.pid) < 3 && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(1ms);
+    std::this_thread::sleep_for(100ms);
+    return b;
+}
+
 TEST(InterruptCli, SlowFramesInFlightAreAbandonedWithinASecond) {
     // Each frame takes seconds (4096 samples per pixel): the run does not
     // wait for them, writes nothing and still stops within a second.
     const fs::path dir = movie_dir("slow", 64, 4096);
     const fs::path out = dir / "out";
-    const Background b = spawn_firsthit({"frames", (dir / "movie.yaml").string(), "--quiet", "--threads", "2",
-                                         "--out", out.string()},
-                                        dir);
+    const Background b = start_slow_frames(dir, out);
     ASSERT_GT(b.pid, 0);
-    // The signals are taken over before the first thread starts: once there
-    // are threads, a signal no longer kills the process outright.
-    const auto end = std::chrono::steady_clock::now() + 30s * kSlowdown;
-    while (thread_count(b.pid) < 3 && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(1ms);
-    std::this_thread::sleep_for(100ms);
     const auto sent = std::chrono::steady_clock::now();
     ASSERT_EQ(kill(b.pid, SIGTERM), 0);
     const int status = wait_for(b.pid, 20s * kSlowdown);
@@ -193,13 +200,8 @@ TEST(InterruptCli, SlowFramesInFlightAreAbandonedWithinASecond) {
 TEST(InterruptCli, SecondSignalStopsAtOnce) {
     const fs::path dir = movie_dir("twice", 64, 4096);
     const fs::path out = dir / "out";
-    const Background b = spawn_firsthit({"frames", (dir / "movie.yaml").string(), "--quiet", "--threads", "2",
-                                         "--out", out.string()},
-                                        dir);
+    const Background b = start_slow_frames(dir, out);
     ASSERT_GT(b.pid, 0);
-    const auto end = std::chrono::steady_clock::now() + 30s * kSlowdown;
-    while (thread_count(b.pid) < 3 && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(1ms);
-    std::this_thread::sleep_for(100ms);
     const auto sent = std::chrono::steady_clock::now();
     ASSERT_EQ(kill(b.pid, SIGINT), 0);
     std::this_thread::sleep_for(50ms);

@@ -13,6 +13,7 @@
 #include "io/movie_loader.h"
 #include "io/scene_loader.h"
 #include "io/yaml_reader.h"
+#include "io/scene_error.h"
 #include "test_util.h"
 
 namespace fh {
@@ -25,19 +26,8 @@ const std::string kCamera =
     "  cam: {type: perspective, width: 10, height: 10, view_point: [0, 0, 5], look_at: [0, 0, -1],\n"
     "        up: [0, 1, 0], projection_distance: 1}\n";
 
-// The formatted error of loading the file at `path` as a scene, the path shown as FILE.
-std::string error_of_file(const std::string& path) {
-    try {
-        load_scene(path);
-    } catch (const InputError& e) {
-        std::string s = e.formatted();
-        if (s.rfind(path, 0) == 0) s.replace(0, path.size(), "FILE");
-        return s;
-    }
-    return "(no error)";
-}
-
-std::string scene_error(const std::string& text) { return error_of_file(write_temp_file("input.yaml", text)); }
+std::string scene_error(const std::string& text) { return test::scene_error(text, "input.yaml"); }
+using test::error_of_file;
 
 TEST(InputFiles, EmptyFile) {
     EXPECT_EQ(scene_error(""), "FILE: error: empty scene file");

@@ -7,6 +7,7 @@
 
 #include "io/input_error.h"
 #include "io/scene_loader.h"
+#include "io/scene_error.h"
 #include "test_util.h"
 
 namespace fh {
@@ -23,18 +24,7 @@ const std::string kCamera =
     "  cam: {type: perspective, width: 10, height: 10, view_point: [0, 0, 5], look_at: [0, 0, -1],\n"
     "        up: [0, 1, 0], projection_distance: 1}\n";
 
-// The formatted error of loading `yaml` as a scene, its path shown as FILE.
-std::string scene_error(const std::string& yaml) {
-    const std::string path = write_temp_file("bad_scene.yaml", yaml);
-    try {
-        load_scene(path);
-    } catch (const InputError& e) {
-        std::string s = e.formatted();
-        if (s.rfind(path, 0) == 0) s.replace(0, path.size(), "FILE");
-        return s;
-    }
-    return "(no error)";
-}
+using test::scene_error;
 
 TEST(SceneLoader, LoadsTheReportScene) {
     const Scene s = load_scene(std::string(FIRSTHIT_SOURCE_DIR) + "/animations/scene.yaml");
