@@ -11,7 +11,7 @@ namespace fh {
 
 template <typename T>
 struct RayBatch {
-    static constexpr int kCapacity = 256;  // one 16 x 16 tile at 1 sample per pixel
+    static constexpr int kCapacity = 128;  // one 16 x 16 tile at 1 sample per pixel
 
     int size = 0;
     alignas(64) T ox[kCapacity];

@@ -12,6 +12,7 @@
 // For the bodies of the batch loops (render/batch_intersect.h): they only
 // vectorise when inlined, and GCC's heuristics do not always inline them.
 #define FH_HOT_INLINE inline __attribute__((always_inline))
+#define FH_HOT_LAMBDA __attribute__((always_inline))
 
 namespace fh {
 

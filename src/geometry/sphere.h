@@ -37,14 +37,10 @@ struct Sphere {
     // Nearest t in (t_min, t_max), or infinity. Branch-free, so a loop of it
     // over a batch of rays vectorises (render/batch_intersect.h).
     FH_HOT_INLINE T intersect(const Ray<T>& ray, T t_min, T t_max) const {
-        const Vec3<T>& d = ray.direction;
         const Vec3<T> f = ray.origin - center;
-        const T b = -glm::dot(f, d);  // t of the closest approach
-        const Vec3<T> closest(mul_add(b, d.x, f.x), mul_add(b, d.y, f.y), mul_add(b, d.z, f.z));
-        // closest.d ~ the rounding of b: its square is what that adds to |closest|^2.
-        const T along = glm::dot(closest, d);
+        const T b = -glm::dot(f, ray.direction);  // t of the closest approach
+        const T disc = discriminant(ray, f, b);
         const T r2 = radius * radius;
-        const T disc = mul_add(along, along, r2 - glm::dot(closest, closest));
         // c = |f|^2 - r^2 is zero, as far as the arithmetic and the origin's own
         // coordinates can tell, for an origin on the sphere: then exactly 0.
         const T f2 = glm::dot(f, f);
@@ -64,12 +60,30 @@ struct Sphere {
         return ((disc >= T(0)) & (t > t_min) & (t < t_max)) ? t : kInfinity<T>;
     }
 
+    // The ray's line meets the sphere iff this is >= 0: the first step of
+    // intersect() on its own, so a batch none of whose rays can hit skips
+    // the rest (render/batch_intersect.h).
+    FH_HOT_INLINE T discriminant(const Ray<T>& ray) const {
+        const Vec3<T> f = ray.origin - center;
+        return discriminant(ray, f, -glm::dot(f, ray.direction));
+    }
+
     Vec3<T> normal_at(const Vec3<T>& p) const { return glm::normalize(p - center); }
 
     // The hit point projected back onto the sphere, so its error is a few ulps
     // of its own coordinates rather than of the ray's travel.
     Vec3<T> point_at(const Ray<T>& ray, T t) const {
         return center + radius * normal_at(ray.at(t));
+    }
+
+private:
+    // r^2 - |closest approach|^2, f = origin - center, b = -f.d.
+    FH_HOT_INLINE T discriminant(const Ray<T>& ray, const Vec3<T>& f, T b) const {
+        const Vec3<T>& d = ray.direction;
+        const Vec3<T> closest(mul_add(b, d.x, f.x), mul_add(b, d.y, f.y), mul_add(b, d.z, f.z));
+        // closest.d ~ the rounding of b: its square is what that adds to |closest|^2.
+        const T along = glm::dot(closest, d);
+        return mul_add(along, along, radius * radius - glm::dot(closest, closest));
     }
 };
 

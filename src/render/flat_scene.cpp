@@ -1,6 +1,7 @@
 #include "render/flat_scene.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace fh {
 
@@ -59,10 +60,51 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
     FlatScene<T> f;
     f.plan = plan;
     const Effects& fx = plan.effects;
-    for (const auto& s : scene.spheres)
+    for (const auto& m : scene.materials) f.materials.push_back(cast<T>(m));
+
+    // The ambient term of each material, summed over the ambient lights.
+    // A light that is off but simulated anyway (plan not pruned) shines with 0.
+    auto intensity = [](const auto& l) { return l.on ? l.intensity : 0.0; };
+    std::vector<dvec3> ambient(scene.materials.size(), dvec3(0));
+    for (const auto& a : scene.ambient_lights) {
+        if (!fx.ambient || !plan.uses(a)) continue;
+        for (size_t m = 0; m < ambient.size(); ++m) {
+            const auto& mat = scene.materials[m];
+            ambient[m] += intensity(a) * mat.ambient * a.color * mat.ambient_color;
+        }
+    }
+    // Primitive rows in primitive id order, after the no-hit row.
+    std::vector<int> row_material{-1};
+    f.rows.emplace_back();
+    auto add_row = [&](PrimitiveRow<T> row, int material) {
+        const Material<T>& m = f.materials[size_t(material)];
+        row.ambient = Color<T>(ambient[size_t(material)]);
+        row.glazed = m.glazed ? T(1) : T(0);
+        row.reflectivity = m.reflectivity;
+        row.exponent = m.phong_exponent;
+        row.whole = m.phong_whole >= 0 ? T(1) : T(0);
+        row.material = material;
+        f.fractional_exponents |= m.phong_whole < 0 && fx.specular;
+        if (m.phong_whole > 0)
+            f.exponent_bits = std::max(f.exponent_bits, int(std::bit_width(unsigned(m.phong_whole))));
+        f.rows.push_back(row);
+        row_material.push_back(material);
+    };
+    for (const auto& s : scene.spheres) {
         f.spheres.push_back({Vec3<T>(s.center), T(s.radius), s.material});
-    for (const auto& p : scene.planes)
+        PrimitiveRow<T> row;
+        row.anchor = Vec3<T>(s.center);
+        row.radius = T(s.radius);
+        row.sphere = 1;
+        add_row(row, s.material);
+    }
+    for (const auto& p : scene.planes) {
         f.planes.push_back({Vec3<T>(p.normal), T(p.distance), p.material});
+        PrimitiveRow<T> row;
+        row.anchor = Vec3<T>(p.distance * p.normal);
+        row.normal = Vec3<T>(p.normal);
+        add_row(row, p.material);
+    }
     std::vector<const Triangle<double>*> kept;
     for (const auto& t : scene.triangles) {
         // A triangle without area can never be hit: leave it out of the loop.
@@ -70,29 +112,25 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
         kept.push_back(&t);
         f.triangles.push_back({Vec3<T>(t.v0), Vec3<T>(t.e1), Vec3<T>(t.e2), Vec3<T>(t.normal),
                                t.material});
+        PrimitiveRow<T> row;
+        row.anchor = Vec3<T>(t.v0);
+        row.normal = Vec3<T>(t.normal);
+        add_row(row, t.material);
     }
     f.clusters = clusters_of<T>(kept);
-    for (const auto& m : scene.materials) f.materials.push_back(cast<T>(m));
 
-    // A light that is off but simulated anyway (plan not pruned) shines with 0.
-    auto intensity = [](const auto& l) { return l.on ? l.intensity : 0.0; };
-    const size_t nm = scene.materials.size();
-    f.ambient_terms.assign(nm, Color<T>(0));
-    for (const auto& a : scene.ambient_lights) {
-        if (!fx.ambient || !plan.uses(a)) continue;
-        for (size_t m = 0; m < nm; ++m) {
-            const auto& mat = scene.materials[m];
-            f.ambient_terms[m] +=
-                Color<T>(intensity(a) * mat.ambient * a.color * mat.ambient_color);
-        }
-    }
     if (!fx.diffuse && !fx.specular) return f;
+    // One row of colour products per light, by primitive row (0 for no hit).
+    auto add_terms = [&](std::vector<LightTerms<T>>& out, const dvec3& color, double strength) {
+        for (const int m : row_material)
+            out.push_back(m < 0 ? LightTerms<T>{}
+                                : terms<T>(scene.materials[size_t(m)], color, strength, fx));
+    };
     for (const auto& l : scene.directional_lights) {
         if (!plan.uses(l)) continue;
         f.directional_lights.push_back({l.name, Color<T>(l.color), T(intensity(l)),
                                         Vec3<T>(l.direction)});
-        for (const auto& mat : scene.materials)
-            f.directional_terms.push_back(terms<T>(mat, l.color, intensity(l), fx));
+        add_terms(f.directional_terms, l.color, intensity(l));
     }
     for (const auto& l : scene.spot_lights) {
         if (!plan.uses(l)) continue;
@@ -104,8 +142,7 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
         // theta never exceeds pi, so a cone that wide needs no test.
         spot.cone_test = !plan.pruned || l.max_angle < 3.14159265358979323846;
         f.spot_lights.push_back(spot);
-        for (const auto& mat : scene.materials)
-            f.spot_terms.push_back(terms<T>(mat, l.color, l.on ? 1.0 : 0.0, fx));  // x falloff
+        add_terms(f.spot_terms, l.color, l.on ? 1.0 : 0.0);  // x falloff
     }
     return f;
 }

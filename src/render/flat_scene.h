@@ -29,20 +29,62 @@ struct TriangleCluster {
     T radius2;  // padded so rounding never culls a real hit
     int first, count;
 
-    // Where the ray leaves the bounding sphere, or infinity if it never meets
-    // it ahead of its origin. A plain test is enough for a padded bound (the
+    // >= 0 iff the ray meets the bounding sphere ahead of its origin (or
+    // starts inside it). A plain test is enough for a padded bound (the
     // robust one of Sphere costs more), and it is branch-free, so a loop of
     // it over a batch vectorises.
-    FH_HOT_INLINE T exit_t(const Ray<T>& ray) const {
+    FH_HOT_INLINE T reach(const Ray<T>& ray) const {
         const Vec3<T> f = ray.origin - center;
         const T b = -glm::dot(f, ray.direction);
         const Vec3<T> closest = f + b * ray.direction;
         const T disc = radius2 - glm::dot(closest, closest);
         const T far = b + std::sqrt(std::max(disc, T(0)));
-        return ((disc >= T(0)) & (far > T(0))) ? far : kInfinity<T>;
+        return ((disc >= T(0)) & (far > T(0))) ? T(1) : T(-1);
     }
 };
 inline constexpr int kClusterSize = 16;
+
+// What shading reads about the primitive a ray hit: one row per primitive id
+// + 1 (row 0: no hit), so a batch loop fetches it with one index per ray.
+// Every field is a T, so the fetch vectorises with the arithmetic around it.
+template <typename T>
+struct PrimitiveRow {
+    Vec3<T> anchor{0};        // sphere: the centre; plane, triangle: a point on it
+    Vec3<T> normal{0, 0, 1};  // plane, triangle: the unit normal
+    T radius = 0;             // sphere
+    T sphere = 0;             // 1 for a sphere
+    Color<T> ambient{0};      // the material's ambient term, all ambient lights
+    T glazed = 0;             // 1: a hit sends a reflection ray
+    T reflectivity = 0;
+    T exponent = 0;           // Phong
+    T whole = 1;              // 1: exponent is whole and at most kWholePowerLimit
+    int material = -1;
+};
+
+// Where a ray meets the primitive of a row at t: the point projected back
+// onto the surface (its error is then a few ulps of its own coordinates, not
+// of the ray's travel) and the unit normal facing the ray (report 8.4).
+// Branch-free, for the shading loops; used for every hit, so one formula.
+template <typename T>
+FH_HOT_INLINE SurfacePoint<T> surface_at(const PrimitiveRow<T>& row, const Ray<T>& ray, T t) {
+    const Vec3<T> p = ray.at(t);
+    const Vec3<T> q = p - row.anchor;
+    const bool sphere = row.sphere != T(0);
+    const Vec3<T> radial = glm::normalize(q);  // Sphere::normal_at
+    const Vec3<T> on_sphere = row.anchor + row.radius * radial;
+    const Vec3<T> on_plane = p - glm::dot(row.normal, q) * row.normal;
+    // Selects per component: a select of whole vectors is a branch to GCC.
+    auto pick = [sphere](const Vec3<T>& a, const Vec3<T>& b) {
+        return Vec3<T>(sphere ? a.x : b.x, sphere ? a.y : b.y, sphere ? a.z : b.z);
+    };
+    SurfacePoint<T> sp;
+    sp.normal = pick(radial, row.normal);
+    sp.point = pick(on_sphere, on_plane);
+    const T facing = glm::dot(sp.normal, ray.direction) > T(0) ? T(-1) : T(1);
+    sp.normal *= facing;
+    sp.material = row.material;
+    return sp;
+}
 
 template <typename T>
 struct FlatScene {
@@ -51,11 +93,15 @@ struct FlatScene {
     std::vector<Triangle<T>> triangles;
     std::vector<TriangleCluster<T>> clusters;  // covering the triangles in order
     std::vector<Material<T>> materials;
-    std::vector<Color<T>> ambient_terms;  // per material
+    std::vector<PrimitiveRow<T>> rows;  // [1 + primitive id]; rows[0]: no hit
     std::vector<DirectionalLight<T>> directional_lights;
     std::vector<SpotLight<T>> spot_lights;
-    std::vector<LightTerms<T>> directional_terms;  // [light * materials + material]
-    std::vector<LightTerms<T>> spot_terms;         // [light * materials + material]
+    // Each light's colour products with each primitive's material:
+    // [light * rows.size() + row].
+    std::vector<LightTerms<T>> directional_terms;
+    std::vector<LightTerms<T>> spot_terms;
+    bool fractional_exponents = false;  // some row has whole == 0: std::pow needed
+    int exponent_bits = 0;              // bits of the largest whole exponent
     EffectPlan plan;
 
     // Only what the plan simulates: lights it uses, terms of its effects.
@@ -72,34 +118,11 @@ struct FlatScene {
 
     // Point, normal facing the ray, and material of a hit.
     SurfacePoint<T> surface(const Ray<T>& ray, const Hit<T>& hit) const {
-        SurfacePoint<T> sp;
-        switch (hit.kind) {
-        case ShapeKind::sphere: {
-            const Sphere<T>& s = spheres[hit.index];
-            sp.normal = s.normal_at(ray.at(hit.t));
-            sp.point = s.center + s.radius * sp.normal;  // Sphere::point_at, normal kept
-            sp.material = s.material;
-            break;
-        }
-        case ShapeKind::plane: {
-            const Plane<T>& p = planes[hit.index];
-            sp.point = p.point_at(ray, hit.t);
-            sp.normal = p.normal;
-            sp.material = p.material;
-            break;
-        }
-        case ShapeKind::triangle: {
-            const Triangle<T>& tr = triangles[hit.index];
-            sp.point = tr.point_at(ray, hit.t);
-            sp.normal = tr.normal;
-            sp.material = tr.material;
-            break;
-        }
-        case ShapeKind::none:
-            break;
-        }
-        if (glm::dot(sp.normal, ray.direction) > T(0)) sp.normal = -sp.normal;
-        return sp;
+        const int ns = int(spheres.size()), np = int(planes.size());
+        int prim = hit.index;
+        if (hit.kind == ShapeKind::plane) prim += ns;
+        if (hit.kind == ShapeKind::triangle) prim += ns + np;
+        return surface_at(rows[size_t(prim + 1)], ray, hit.t);
     }
 };
 

@@ -8,9 +8,18 @@
 // Colours stay unclamped here; the pixel clamps (render/render.cpp).
 //
 // The work goes in waves: the batch's nearest hits, then per light one batch
-// of shadow rays for the hits that face it, then one batch of reflection rays
-// for the glazed hits, which is the next wave. Glazing adds reflectivity times
-// the next colour, so the report's recursion becomes a running weight per ray.
+// of shadow rays for the hit points that face it, then one batch of
+// reflection rays for the glazed hits, which is the next wave. Glazing adds
+// reflectivity times the next colour, so the report's recursion becomes a
+// running weight per ray.
+//
+// Every per-ray step is a branch-free loop over the wave in structure-of-
+// arrays form, which GCC vectorises across AVX2 lanes: misses run through
+// the same arithmetic as hits (with the no-hit row of FlatScene::rows) and
+// are masked at the end. Only gathering the rays that go on -- shadow rays
+// of lit points, reflection rays of glazed hits -- and adding each ray's
+// colour to its camera ray are scalar loops, of a few stores per ray.
+//
 // F (ShaderFeature bits) fixes at compile time whether shadow rays, the
 // specular term and glazing exist at all; with_shader picks the variant the
 // frame's effect plan calls for.
@@ -19,25 +28,13 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/fast_math.h"
 #include "core/offset.h"
 #include "render/background.h"
 #include "render/batch_intersect.h"
 #include "render/stats.h"
 
 namespace fh {
-
-// x^n for a whole n >= 0 by squaring: the report's Phong exponents are whole,
-// and this is several times cheaper than std::pow.
-template <typename T>
-inline T pow_whole(T x, unsigned n) {
-    T r = 1;
-    while (n) {
-        if (n & 1u) r *= x;
-        x *= x;
-        n >>= 1;
-    }
-    return r;
-}
 
 template <typename T, unsigned F>
 class Shader {
@@ -46,6 +43,7 @@ public:
     static constexpr bool kSpecularTerm = (F & kSpecular) != 0;
     static constexpr bool kReflections = (F & kGlazing) != 0;
     static constexpr int N = RayBatch<T>::kCapacity;
+    using Mask = BlockMask<T>;
 
     explicit Shader(const FlatScene<T>& scene) : scene_(scene) {}
 
@@ -77,147 +75,188 @@ public:
     }
 
 private:
-    // The rays in flight, and for each the camera ray it adds to and its weight.
-    // Scratch of tens of kilobytes: constructed without zeroing it.
+    // The rays in flight and, for each, what its hit looks like. Scratch of
+    // tens of kilobytes: constructed without zeroing it.
     struct Wave {
-        explicit Wave(RayBatch<T>& r) : rays(r) {}
+        explicit Wave(RayBatch<T>& batch) : rays(batch) {}
         RayBatch<T>& rays;
-        int slot[N];
-        T weight[N];
-        // Filled by shade_wave: the surface points the rays hit.
-        int hits = 0;
-        SurfacePoint<T> point[N];
-        Vec3<T> view[N];  // toward the viewer
-        int hit_slot[N];
-        T hit_weight[N];
+        int slot[N];  // the camera ray each adds to
+        T weight[N];  // and with what weight
+        std::int32_t row[N];  // FlatScene::rows index: primitive id + 1, 0 for a miss
+        Mask hit[N];          // row != 0, as wide as T
+        alignas(64) T px[N], py[N], pz[N];  // the hit point
+        alignas(64) T nx[N], ny[N], nz[N];  // the normal, facing the ray
+        alignas(64) T sx[N], sy[N], sz[N];  // where secondary rays start
+        alignas(64) T exponent[N];          // Phong exponent of the hit's material
+        alignas(64) T r[N], g[N], b[N];     // the colour the ray brings back
     };
 
+    // Vectors of a wave's arrays, by ray.
+    static FH_HOT_INLINE Vec3<T> at(const T* x, const T* y, const T* z, int i) {
+        return {x[i], y[i], z[i]};
+    }
+    static FH_HOT_INLINE void put(T* x, T* y, T* z, int i, const Vec3<T>& v) {
+        x[i] = v.x;
+        y[i] = v.y;
+        z[i] = v.z;
+    }
+
     void shade_wave(Wave& w, Color<T>* colours, RayCounts& counts) const {
+        find_surfaces(w);
+        for (size_t l = 0; l < scene_.directional_lights.size(); ++l) {
+            const Vec3<T> to_light = scene_.directional_lights[l].to_light();
+            add_light(w, &scene_.directional_terms[l * scene_.rows.size()], counts,
+                      [to_light](const Vec3<T>&) FH_HOT_LAMBDA {
+                          return SpotRadiance<T>{to_light, kInfinity<T>, T(1)};
+                      });
+        }
+        for (size_t l = 0; l < scene_.spot_lights.size(); ++l) {
+            // A copy, not a reference: the loop over the wave keeps it in registers.
+            add_light(w, &scene_.spot_terms[l * scene_.rows.size()], counts,
+                      [spot = scene_.spot_lights[l],
+                       widest = scene_.spot_lights[l].widest_angle()](const Vec3<T>& p)
+                          FH_HOT_LAMBDA { return spot.radiance_at(p, widest); });
+        }
+        const int n = w.rays.size;
+        for (int i = 0; i < n; ++i) {  // misses see the sky
+            const Color<T> sky = background(Vec3<T>(w.rays.dx[i], w.rays.dy[i], w.rays.dz[i]));
+            const bool hit = w.hit[i] != 0;
+            w.r[i] = hit ? w.r[i] : sky.x;
+            w.g[i] = hit ? w.g[i] : sky.y;
+            w.b[i] = hit ? w.b[i] : sky.z;
+        }
+        for (int i = 0; i < n; ++i)
+            colours[w.slot[i]] += w.weight[i] * Color<T>(w.r[i], w.g[i], w.b[i]);
+    }
+
+    // Hit points, facing normals, secondary-ray origins, ambient colour.
+    void find_surfaces(Wave& w) const {
+        const int n = w.rays.size;
         T t[N];
         std::int32_t prim[N];
         closest_hits(scene_, w.rays, t, prim);
-        Color<T> local[N];
-        w.hits = 0;
-        for (int i = 0; i < w.rays.size; ++i) {
-            const Ray<T> ray = w.rays.ray(i);
-            if (prim[i] == kNoHit) {
-                colours[w.slot[i]] += w.weight[i] * background(ray.direction);
-                continue;
+        // Fetch each ray's row into arrays (scalar: GCC cannot gather here),
+        // so the arithmetic below runs on every lane.
+        alignas(64) T ax[N], ay[N], az[N], mx[N], my[N], mz[N], radius[N], sphere[N];
+        for (int i = 0; i < n; ++i) {
+            const std::int32_t row = prim[i] + 1;
+            const PrimitiveRow<T>& pr = scene_.rows[size_t(row)];
+            w.row[i] = row;
+            w.hit[i] = row != 0;
+            t[i] = row != 0 ? t[i] : T(0);  // a miss: any finite point will do
+            put(ax, ay, az, i, pr.anchor);
+            put(mx, my, mz, i, pr.normal);
+            radius[i] = pr.radius;
+            sphere[i] = pr.sphere;
+            w.exponent[i] = pr.exponent;
+            put(w.r, w.g, w.b, i, pr.ambient);
+        }
+        for (int i = 0; i < n; ++i) {
+            PrimitiveRow<T> pr;
+            pr.anchor = at(ax, ay, az, i);
+            pr.normal = at(mx, my, mz, i);
+            pr.radius = radius[i];
+            pr.sphere = sphere[i];
+            const SurfacePoint<T> sp = surface_at(pr, w.rays.ray(i), t[i]);
+            put(w.px, w.py, w.pz, i, sp.point);
+            put(w.nx, w.ny, w.nz, i, sp.normal);
+            put(w.sx, w.sy, w.sz, i, offset_origin(sp.point, sp.normal));
+        }
+    }
+
+    // Diffuse and specular of one light (report 8.2-8.3). light_at(point)
+    // gives the direction to the light, its distance and its intensity
+    // there; terms: the light's colour products, by primitive row.
+    template <typename LightAt>
+    void add_light(Wave& w, const LightTerms<T>* terms, RayCounts& counts,
+                   const LightAt light_at) const {
+        const int n = w.rays.size;
+        alignas(64) T lx[N], ly[N], lz[N], distance[N], intensity[N], n_dot_l[N];
+        Mask lit[N];
+        for (int i = 0; i < n; ++i) {
+            const SpotRadiance<T> s = light_at(at(w.px, w.py, w.pz, i));
+            const T ndl = glm::dot(at(w.nx, w.ny, w.nz, i), s.to_light);
+            put(lx, ly, lz, i, s.to_light);
+            distance[i] = s.distance;
+            intensity[i] = s.intensity;
+            n_dot_l[i] = ndl;
+            // Faces away or gets nothing: no diffuse, no specular, no shadow
+            // ray. (intensity >= 0, so one product tests both.)
+            lit[i] = ((w.hit[i] != 0) & (s.intensity * ndl > T(0))) ? 1 : 0;
+        }
+        if constexpr (kShadowRays) cast_shadows(w, lx, ly, lz, distance, lit, counts);
+
+        // The weights of the light's diffuse and specular colours at each
+        // point: intensity n.l and intensity (n.h)^exponent, h the half vector.
+        alignas(64) T diffuse[N], specular[N], n_dot_h[N], exponent[N];
+        for (int i = 0; i < n; ++i) {
+            // A select, not a product with 0: an unlit lane may hold NaN.
+            diffuse[i] = lit[i] != 0 ? intensity[i] * n_dot_l[i] : T(0);
+            specular[i] = 1;
+            if constexpr (kSpecularTerm) {
+                const Vec3<T> view(-w.rays.dx[i], -w.rays.dy[i], -w.rays.dz[i]);
+                const Vec3<T> h = glm::normalize(at(lx, ly, lz, i) + view);
+                n_dot_h[i] = std::max(T(0), glm::dot(at(w.nx, w.ny, w.nz, i), h));
+                exponent[i] = w.exponent[i];
             }
-            const int k = w.hits++;
-            w.point[k] = scene_.surface(ray, scene_.hit_of(t[i], prim[i]));
-            w.view[k] = -ray.direction;
-            w.hit_slot[k] = w.slot[i];
-            w.hit_weight[k] = w.weight[i];
-            local[k] = scene_.ambient_terms[w.point[k].material];
         }
-        for (size_t l = 0; l < scene_.directional_lights.size(); ++l)
-            add_directional(w, l, local, counts);
-        for (size_t l = 0; l < scene_.spot_lights.size(); ++l) add_spot(w, l, local, counts);
-        for (int k = 0; k < w.hits; ++k) colours[w.hit_slot[k]] += w.hit_weight[k] * local[k];
-    }
-
-    // The hits facing the light, as a batch of shadow rays; blocked[j] for each.
-    struct Lit {
-        RayBatch<T> shadow;
-        int hit[N];
-        Vec3<T> to_light[N];
-        T n_dot_l[N];
-        T intensity[N];
-        BlockMask<T> blocked[N];
-    };
-
-    void cast_shadows(Lit& lit, RayCounts& counts) const {
-        if constexpr (kShadowRays) {
-            find_blocked(scene_, lit.shadow, lit.blocked);
-            counts.shadow += std::uint64_t(lit.shadow.size);
-        } else {
-            for (int j = 0; j < lit.shadow.size; ++j) lit.blocked[j] = 0;
-        }
-    }
-
-    void add_directional(const Wave& w, size_t l, Color<T>* local, RayCounts& counts) const {
-        const Vec3<T> to_light = scene_.directional_lights[l].to_light();
-        Lit lit;
-        for (int k = 0; k < w.hits; ++k) {
-            const SurfacePoint<T>& sp = w.point[k];
-            const T n_dot_l = glm::dot(sp.normal, to_light);
-            if (n_dot_l <= T(0)) continue;  // faces away: no diffuse, no specular
-            const int j = lit.shadow.size;
-            lit.hit[j] = k;
-            lit.to_light[j] = to_light;
-            lit.n_dot_l[j] = n_dot_l;
-            lit.intensity[j] = T(1);
-            lit.shadow.push({offset_origin(sp.point, sp.normal), to_light});
-        }
-        cast_shadows(lit, counts);
-        add_unblocked(w, lit, &scene_.directional_terms[l * scene_.materials.size()], local);
-    }
-
-    void add_spot(const Wave& w, size_t l, Color<T>* local, RayCounts& counts) const {
-        const SpotLight<T>& spot = scene_.spot_lights[l];
-        Lit lit;
-        for (int k = 0; k < w.hits; ++k) {
-            const SurfacePoint<T>& sp = w.point[k];
-            const SpotRadiance<T> r = spot.radiance_at(sp.point);
-            if (r.intensity <= T(0)) continue;
-            const T n_dot_l = glm::dot(sp.normal, r.to_light);
-            if (n_dot_l <= T(0)) continue;
-            const int j = lit.shadow.size;
-            lit.hit[j] = k;
-            lit.n_dot_l[j] = n_dot_l;
-            lit.intensity[j] = r.intensity;
-            lit.to_light[j] = r.to_light;
-            // Blockers count only between the point and the light.
-            lit.shadow.push({offset_origin(sp.point, sp.normal), r.to_light}, r.distance);
-        }
-        cast_shadows(lit, counts);
-        add_unblocked(w, lit, &scene_.spot_terms[l * scene_.materials.size()], local);
-    }
-
-    // Diffuse and specular of one light at the hits its shadow rays reached.
-    // terms: the light's row of colour products, indexed by material.
-    void add_unblocked(const Wave& w, const Lit& lit, const LightTerms<T>* terms,
-                       Color<T>* local) const {
-        for (int j = 0; j < lit.shadow.size; ++j) {
-            if (lit.blocked[j]) continue;
-            const int k = lit.hit[j];
-            const SurfacePoint<T>& sp = w.point[k];
-            local[k] += direct(terms[sp.material], sp, lit.to_light[j], w.view[k], lit.n_dot_l[j],
-                               lit.intensity[j]);
-        }
-    }
-
-    // Lambert + Blinn-Phong for one unshadowed light with n.l > 0.
-    Color<T> direct(const LightTerms<T>& terms, const SurfacePoint<T>& sp, const Vec3<T>& to_light,
-                    const Vec3<T>& view, T n_dot_l, T intensity) const {
-        Color<T> c = n_dot_l * terms.diffuse;
         if constexpr (kSpecularTerm) {
-            const Material<T>& m = scene_.materials[size_t(sp.material)];
-            const Vec3<T> h = glm::normalize(to_light + view);
-            const T n_dot_h = std::max(T(0), glm::dot(sp.normal, h));
-            const T s = m.phong_whole >= 0 ? pow_whole(n_dot_h, unsigned(m.phong_whole))
-                                           : std::pow(n_dot_h, m.phong_exponent);
-            c += s * terms.specular;
+            // Square-and-multiply, one pass per bit of the scene's largest
+            // exponent (7 for the report's 100) rather than 12 per point.
+            for (int bit = scene_.exponent_bits - 1; bit >= 0; --bit)
+                for (int i = 0; i < n; ++i) pow_whole_step(specular[i], n_dot_h[i], exponent[i], bit);
+            if (scene_.fractional_exponents)  // rare: std::pow where needed
+                for (int i = 0; i < n; ++i)
+                    if (scene_.rows[size_t(w.row[i])].whole == T(0))
+                        specular[i] = std::pow(n_dot_h[i], w.exponent[i]);
         }
-        return intensity * c;
+        for (int i = 0; i < n; ++i)
+            specular[i] = kSpecularTerm && lit[i] != 0 ? intensity[i] * specular[i] : T(0);
+        for (int i = 0; i < n; ++i) {  // scalar: the colours are by row
+            const LightTerms<T>& k = terms[w.row[i]];
+            w.r[i] += diffuse[i] * k.diffuse.x + specular[i] * k.specular.x;
+            w.g[i] += diffuse[i] * k.diffuse.y + specular[i] * k.specular.y;
+            w.b[i] += diffuse[i] * k.diffuse.z + specular[i] * k.specular.z;
+        }
+    }
+
+    // One shadow ray per lit point, toward the light and no farther; lit
+    // is cleared where something blocks it.
+    void cast_shadows(const Wave& w, const T* lx, const T* ly, const T* lz, const T* distance,
+                      Mask* lit, RayCounts& counts) const {
+        RayBatch<T> shadow;
+        int from[N];
+        int m = 0;
+        for (int i = 0; i < w.rays.size; ++i) {  // written always, kept if lit
+            shadow.set(m, {at(w.sx, w.sy, w.sz, i), at(lx, ly, lz, i)}, distance[i]);
+            from[m] = i;
+            m += int(lit[i]);
+        }
+        shadow.size = m;
+        Mask blocked[N];
+        find_blocked(scene_, shadow, blocked);
+        for (int j = 0; j < m; ++j) lit[from[j]] = 1 - blocked[j];
+        counts.shadow += std::uint64_t(m);
     }
 
     // The glazed hits' mirrored rays become the next wave.
     void reflect_wave(Wave& w) const {
-        w.rays.size = 0;
-        for (int k = 0; k < w.hits; ++k) {
-            const SurfacePoint<T>& sp = w.point[k];
-            const Material<T>& m = scene_.materials[size_t(sp.material)];
-            if (!m.glazed) continue;
-            w.slot[w.rays.size] = w.hit_slot[k];
-            w.weight[w.rays.size] = w.hit_weight[k] * m.reflectivity;
-            w.rays.push({offset_origin(sp.point, sp.normal), reflect(-w.view[k], sp.normal)});
+        const int n = w.rays.size;
+        alignas(64) T rx[N], ry[N], rz[N];
+        for (int i = 0; i < n; ++i) {
+            const Vec3<T> d(w.rays.dx[i], w.rays.dy[i], w.rays.dz[i]);
+            const Vec3<T> normal = at(w.nx, w.ny, w.nz, i);
+            put(rx, ry, rz, i, glm::normalize(d - T(2) * glm::dot(d, normal) * normal));
         }
-    }
-
-    static Vec3<T> reflect(const Vec3<T>& d, const Vec3<T>& n) {
-        return glm::normalize(d - T(2) * glm::dot(d, n) * n);
+        int m = 0;
+        for (int i = 0; i < n; ++i) {  // written always, kept if glazed; m <= i
+            const PrimitiveRow<T>& pr = scene_.rows[size_t(w.row[i])];  // a miss: not glazed
+            w.rays.set(m, {at(w.sx, w.sy, w.sz, i), at(rx, ry, rz, i)});
+            w.slot[m] = w.slot[i];
+            w.weight[m] = w.weight[i] * pr.reflectivity;
+            m += int(pr.glazed != T(0));
+        }
+        w.rays.size = m;
     }
 
     const FlatScene<T>& scene_;

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "core/vec.h"
+#include "core/fast_math.h"
 
 namespace fh {
 
@@ -17,14 +17,14 @@ struct Material {
     T diffuse = 0;
     T specular = 0;
     T phong_exponent = 1;
-    int phong_whole = -1;  // phong_exponent when it is a whole number <= 4096, else -1
+    int phong_whole = -1;  // phong_exponent when it is a whole number <= kWholePowerLimit, else -1
     bool glazed = false;
     T reflectivity = 0;  // weight of the reflected colour when glazed
 };
 
 // The exponent as a whole number, so shading can use repeated squaring.
 inline int whole_exponent(double e) {
-    return (e >= 0 && e <= 4096 && std::floor(e) == e) ? int(e) : -1;
+    return (e >= 0 && e <= kWholePowerLimit && std::floor(e) == e) ? int(e) : -1;
 }
 
 }  // namespace fh

@@ -11,7 +11,7 @@
 #include <limits>
 #include <string>
 
-#include "core/vec.h"
+#include "core/fast_math.h"
 
 namespace fh {
 
@@ -33,24 +33,32 @@ struct SpotLight {
     bool on = true;
     bool cone_test = true;  // false when max_angle >= pi: every theta is inside
 
-    SpotRadiance<T> radiance_at(const Vec3<T>& p) const {
-        SpotRadiance<T> r;
+    SpotRadiance<T> radiance_at(const Vec3<T>& p) const { return radiance_at(p, widest_angle()); }
+
+    // The widest theta that gets light.
+    T widest_angle() const { return cone_test ? max_angle : kInfinity<T>; }
+
+    // Branch-free, so the shading loop over a batch of points vectorises;
+    // widest = widest_angle(), computed once outside that loop.
+    FH_HOT_INLINE SpotRadiance<T> radiance_at(const Vec3<T>& p, T widest) const {
         const Vec3<T> delta = position - p;
         const T d2 = glm::dot(delta, delta);
         // At the light's own position the direction is undefined: no light.
-        if (!(d2 > T(0)) || !std::isfinite(d2)) return r;
-        const T inv_distance = T(1) / std::sqrt(d2);
+        const bool defined = (d2 > T(0)) & (d2 < kInfinity<T>);
+        const T inv_distance = defined ? T(1) / std::sqrt(d2) : T(0);
+        SpotRadiance<T> r;
         r.distance = d2 * inv_distance;
         r.to_light = delta * inv_distance;
-        // Rounding can push the cosine just past +-1; acos would return NaN.
-        const T cos_theta = std::clamp(-glm::dot(r.to_light, axis), T(-1), T(1));
-        const T theta = std::acos(cos_theta);
-        if (cone_test && theta > max_angle) return r;
+        // Rounding can push the cosine just past +-1, outside acos's domain.
+        const T cos_theta = std::min(T(1), std::max(T(-1), -glm::dot(r.to_light, axis)));
+        const T theta = acos_fast(cos_theta);
+        const bool inside = theta <= widest;
         // Right next to the light, d^2 can be so small (subnormal) that I / d^2
         // overflows to infinity. Capped at sqrt(max): finite, with room for the
         // colour products, and saturating every pixel it reaches anyway.
         const T cap = std::sqrt(std::numeric_limits<T>::max());
-        r.intensity = std::min(cap, intensity * std::max(T(0), T(1) - theta / max_angle) / d2);
+        const T falloff = std::min(cap, intensity * std::max(T(0), T(1) - theta / max_angle) / d2);
+        r.intensity = (defined & inside) ? falloff : T(0);
         return r;
     }
 };
