@@ -16,13 +16,14 @@ const Scene& report_scene() {
     return s;
 }
 
-// A full batch of camera rays from the middle of the perspective view.
+// A full batch of camera rays from the middle of the perspective view, in
+// rows of 16 pixels.
 template <typename T>
 RayBatch<T> camera_batch() {
     const CameraRays<T> cam(*report_scene().find_camera("perspective"));
     RayBatch<T> b;
-    for (int y = 0; y < 16; ++y)
-        for (int x = 0; x < 16; ++x) b.push(cam.generate(T(392 + x), T(392 + y)));
+    for (int i = 0; i < RayBatch<T>::kCapacity; ++i)
+        b.push(cam.generate(T(392 + i % 16), T(392 + i / 16)));
     return b;
 }
 

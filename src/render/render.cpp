@@ -47,15 +47,22 @@ void render_pixels(const S& shader, const CameraRays<T>& rays, const PixelRef* p
         for (int i = 0; i < n; ++i) sum[pixel_of[i]] += Color<double>(clamped(colour[i], counts));
         n = 0;
     };
-    for (int p = 0; p < count; ++p) {
-        sum[p] = Color<double>(0);
-        const int x = pixels[p].x, y = pixels[p].y;
-        for (int s = 0; s < spp; ++s) {
-            const SampleOffset o = sample_offset(x, y, s, grid);
-            pixel_of[n] = p;
-            sample_x[n] = T(x + o.x);
-            sample_y[n] = T(y + o.y);
-            if (++n == kBatch) flush();
+    auto add_sample = [&](int p, double x, double y) {
+        pixel_of[n] = p;
+        sample_x[n] = T(x);
+        sample_y[n] = T(y);
+        if (++n == kBatch) flush();
+    };
+    for (int p = 0; p < count; ++p) sum[p] = Color<double>(0);
+    if (spp == 1) {  // the centre: no hashing (its own loop, so none is done speculatively)
+        for (int p = 0; p < count; ++p) add_sample(p, pixels[p].x + 0.5, pixels[p].y + 0.5);
+    } else {
+        for (int p = 0; p < count; ++p) {
+            const int x = pixels[p].x, y = pixels[p].y;
+            for (int s = 0; s < spp; ++s) {
+                const SampleOffset o = sample_offset(x, y, s, grid);
+                add_sample(p, x + o.x, y + o.y);
+            }
         }
     }
     if (n > 0) flush();

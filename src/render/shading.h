@@ -246,7 +246,8 @@ private:
         for (int i = 0; i < n; ++i) {
             const Vec3<T> d(w.rays.dx[i], w.rays.dy[i], w.rays.dz[i]);
             const Vec3<T> normal = at(w.nx, w.ny, w.nz, i);
-            put(rx, ry, rz, i, glm::normalize(d - T(2) * glm::dot(d, normal) * normal));
+            // Unit to rounding, as d and the normal are: no normalize needed.
+            put(rx, ry, rz, i, d - T(2) * glm::dot(d, normal) * normal);
         }
         int m = 0;
         for (int i = 0; i < n; ++i) {  // written always, kept if glazed; m <= i

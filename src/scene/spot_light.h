@@ -56,8 +56,12 @@ struct SpotLight {
         // Right next to the light, d^2 can be so small (subnormal) that I / d^2
         // overflows to infinity. Capped at sqrt(max): finite, with room for the
         // colour products, and saturating every pixel it reaches anyway.
+        // (Products with reciprocals, not divisions: the loop's slowest
+        // instructions. falloff * inv_distance first, so a falloff of 0
+        // stays 0 however large inv_distance^2 would be.)
         const T cap = std::sqrt(std::numeric_limits<T>::max());
-        const T falloff = std::min(cap, intensity * std::max(T(0), T(1) - theta / max_angle) / d2);
+        const T cone = std::max(T(0), T(1) - theta * (T(1) / max_angle));
+        const T falloff = std::min(cap, intensity * (cone * inv_distance) * inv_distance);
         r.intensity = (defined & inside) ? falloff : T(0);
         return r;
     }
