@@ -1,17 +1,35 @@
 #!/usr/bin/env bash
-# Encodes a folder of frames (frame_0000.png, frame_0001.png, ...) into an MP4:
-# H.264, yuv420p (plays everywhere), the movie's fps, +faststart (plays while
-# downloading). The MP4 is written under a temporary name and renamed, so it
-# is whole or absent.
+# Encodes frames into an MP4: H.264, yuv420p (plays everywhere), the movie's
+# fps, +faststart (plays while downloading). The MP4 is written under a
+# temporary name and renamed, so it is whole or absent.
 #
-#   scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N]      (default fps: 30)
+#   scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N]
+#       a folder of frame_0000.png, frame_0001.png, ... (default fps: 30)
+#   scripts/encode.sh --raw WIDTHxHEIGHT OUT.mp4 [--fps N]
+#       raw RGB24 frames on standard input, as `firsthit frames --raw-video -`
+#       writes them while it renders: the encoder then runs beside the
+#       renderer (scripts/make_movie.sh). Same settings, so the same video as
+#       encoding the frame files afterwards.
 set -euo pipefail
 
 die() { echo "encode.sh: error: $*" >&2; exit 2; }
+usage="usage: scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N]  |  scripts/encode.sh --raw WxH OUT.mp4 [--fps N]"
 
-[[ $# -ge 2 ]] || die "usage: scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N]"
-dir=$1 out=$2 fps=30
-shift 2
+raw_size=
+if [[ ${1:-} == --raw ]]; then
+  [[ $# -ge 2 ]] || die "--raw needs WIDTHxHEIGHT"
+  raw_size=$2
+  shift 2
+  [[ $raw_size =~ ^[1-9][0-9]*x[1-9][0-9]*$ ]] || die "--raw needs WIDTHxHEIGHT (e.g. 800x800), got '$raw_size'"
+  [[ $# -ge 1 ]] || die "$usage"
+  dir= out=$1
+  shift 1
+else
+  [[ $# -ge 2 ]] || die "$usage"
+  dir=$1 out=$2
+  shift 2
+fi
+fps=30
 while [[ $# -gt 0 ]]; do
   case $1 in
     --fps) [[ $# -ge 2 ]] || die "--fps needs a value"; fps=$2; shift 2 ;;
@@ -20,24 +38,31 @@ while [[ $# -gt 0 ]]; do
 done
 [[ $fps =~ ^[0-9]+([.][0-9]+)?$ ]] && awk "BEGIN{exit !($fps > 0)}" || die "--fps must be a number > 0, got '$fps'"
 command -v ffmpeg >/dev/null || die "ffmpeg not found; install it with: apt-get install ffmpeg"
-[[ -d $dir ]] || die "no such folder: $dir"
 
-# The frames must be frame_0..frame_{n-1}, all with the same zero padding.
-mapfile -t frames < <(cd "$dir" && ls -1 | grep -E '^frame_[0-9]+\.png$' | sort)
-n=${#frames[@]}
-[[ $n -gt 0 ]] || die "$dir holds no frames (frame_0000.png, ...)"
-digits=$(( ${#frames[0]} - 10 ))  # "frame_" + digits + ".png"
-for ((i = 0; i < n; i++)); do
-  want=$(printf "frame_%0${digits}d.png" "$i")
-  [[ ${frames[$i]} == "$want" ]] || die "$dir has a gap or stray frame: expected $want, found ${frames[$i]} (render the missing frames with 'firsthit frames MOVIE --resume')"
-done
+if [[ -n $raw_size ]]; then
+  input=(-f rawvideo -pix_fmt rgb24 -s "$raw_size" -framerate "$fps" -i -)
+  what="raw frames from standard input"
+else
+  [[ -d $dir ]] || die "no such folder: $dir"
+  # The frames must be frame_0..frame_{n-1}, all with the same zero padding.
+  mapfile -t frames < <(cd "$dir" && ls -1 | grep -E '^frame_[0-9]+\.png$' | sort)
+  n=${#frames[@]}
+  [[ $n -gt 0 ]] || die "$dir holds no frames (frame_0000.png, ...)"
+  digits=$(( ${#frames[0]} - 10 ))  # "frame_" + digits + ".png"
+  for ((i = 0; i < n; i++)); do
+    want=$(printf "frame_%0${digits}d.png" "$i")
+    [[ ${frames[$i]} == "$want" ]] || die "$dir has a gap or stray frame: expected $want, found ${frames[$i]} (render the missing frames with 'firsthit frames MOVIE --resume')"
+  done
+  input=(-framerate "$fps" -i "$dir/frame_%0${digits}d.png")
+  what="$n frames"
+fi
 
 tmp="$(dirname "$out")/.$(basename "$out").tmp-$$.mp4"
 trap 'rm -f "$tmp"' EXIT
 # pad: H.264 in yuv420p needs even sides.
-ffmpeg -hide_banner -loglevel error -y -framerate "$fps" -i "$dir/frame_%0${digits}d.png" \
+ffmpeg -hide_banner -loglevel error -nostdin -y "${input[@]}" \
   -vf "pad=ceil(iw/2)*2:ceil(ih/2)*2" -c:v libx264 -preset medium -pix_fmt yuv420p \
   -movflags +faststart "$tmp"
 mv -f "$tmp" "$out"
 trap - EXIT
-echo "encoded $n frames at $fps fps into $out"
+echo "encoded $what at $fps fps into $out"

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iostream>
 #include <mutex>
+#include <optional>
 #include <shared_mutex>
 
 #include <unistd.h>
@@ -22,6 +23,7 @@
 #include "io/input_error.h"
 #include "io/movie_loader.h"
 #include "io/png_writer.h"
+#include "io/raw_video_writer.h"
 #include "io/scene_loader.h"
 
 namespace fh {
@@ -47,6 +49,11 @@ second and the time left.
                    Job (the Job's completions)
   --resume         skip frames whose file is already complete (after an
                    interrupted or killed run: renders exactly the missing ones)
+  --raw-video F    also write every frame, in order, as raw RGB24 to file F
+                   ('-': standard output), for an encoder to read while the
+                   frames render: `... --raw-video - | ffmpeg -f rawvideo
+                   -pix_fmt rgb24 -s WxH -r FPS -i - ...` (scripts/encode.sh
+                   --raw does this); not with --shard or --resume
   --threads N      worker threads (default: one per core)
   --spp N, --depth N, --precision P, --adaptive, --aa-threshold X,
   --aa-samples N, --no-prune   as for render
@@ -72,7 +79,7 @@ int run_frames(const Words& words) {
         "frames", words,
         {{"--out"}, {"--range"}, {"--shard"}, {"--shards"}, {"--resume", false}, {"--threads"}, {"--spp"},
          {"--depth"}, {"--precision"}, {"--no-prune", false}, {"--adaptive", false}, {"--aa-threshold"},
-         {"--aa-samples"}, {"--stats", false}, {"--quiet", false}});
+         {"--aa-samples"}, {"--stats", false}, {"--quiet", false}, {"--raw-video"}});
     if (args.positional().size() != 1)
         throw UsageError("expected one MOVIE file, got " + std::to_string(args.positional().size()));
     const std::string file = args.positional()[0];
@@ -114,6 +121,15 @@ int run_frames(const Words& words) {
         std::cerr << "firsthit: removed " << removed << " temporary file(s) left by an interrupted run in "
                   << out.string() << "\n";
 
+    // The stream is the movie's frames in order: all of them, or a range.
+    std::optional<RawVideoWriter> raw_video;
+    if (const auto raw = args.value("--raw-video")) {
+        if (args.has("--shard") || args.has("--resume"))
+            throw UsageError("--raw-video streams whole runs of frames: not with --shard or --resume");
+        if (*raw == "-" && args.has("--stats"))
+            throw UsageError("--raw-video - writes frames to standard output: not with --stats");
+        raw_video.emplace(*raw, 8);
+    }
     if (args.has("--resume"))
         std::erase_if(frames, [&](int i) { return is_complete_png((out / frame_file_name(i, n)).string()); });
 
@@ -136,11 +152,17 @@ int run_frames(const Words& words) {
     pool.parallel_for(int(frames.size()), [&](int task, int) {
         if (interrupted()) return;
         const int i = frames[size_t(task)];
-        const FrameResult r =
-            render_frame(movie.scene, camera_at(movie, i), settings, movie.scene.effects, nullptr);
-        {
-            std::shared_lock lock(write_mutex);
-            write_png((out / frame_file_name(i, n)).string(), r.image);
+        FrameResult r;
+        try {
+            r = render_frame(movie.scene, camera_at(movie, i), settings, movie.scene.effects, nullptr);
+            {
+                std::shared_lock lock(write_mutex);
+                write_png((out / frame_file_name(i, n)).string(), r.image);
+            }
+            if (raw_video) raw_video->put(task, std::move(r.image));
+        } catch (const std::exception& e) {
+            if (raw_video) raw_video->fail(e.what());  // frames after this one wait for it
+            throw;
         }
         {
             std::lock_guard lock(counts_mutex);

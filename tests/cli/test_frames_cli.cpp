@@ -80,6 +80,54 @@ TEST(FramesCli, BadSelectionsAreUsageErrors) {
     EXPECT_EQ(run_firsthit("frames " + source_path("animations/scene.yaml")).status, 2);
 }
 
+TEST(FramesCli, RawVideoIsEveryFrameInOrder) {
+    // Three workers finish frames out of order; the stream must not be.
+    const fs::path dir = tiny_movie("frames_raw");
+    const auto r = run_firsthit(frames(dir, "--threads 3 --out " + (dir / "f").string() +
+                                                " --raw-video " + (dir / "raw.rgb").string()));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string raw = slurp(dir / "raw.rgb");
+    constexpr size_t kFrameBytes = 64 * 64 * 3;
+    ASSERT_EQ(raw.size(), 12 * kFrameBytes);
+    for (int i = 0; i < 12; ++i) {
+        const Image png = read_png((dir / "f" / frame_files(dir / "f")[size_t(i)]).string());
+        EXPECT_EQ(raw.compare(size_t(i) * kFrameBytes, kFrameBytes,
+                              reinterpret_cast<const char*>(png.rgb.data()), kFrameBytes),
+                  0)
+            << "frame " << i;
+    }
+}
+
+TEST(FramesCli, RawVideoErrors) {
+    const fs::path dir = tiny_movie("frames_raw_bad");
+    const std::string out = " --out " + (dir / "f").string();
+    EXPECT_EQ(run_firsthit(frames(dir, "--shard 0/2 --raw-video -" + out)).err,
+              "firsthit: error: --raw-video streams whole runs of frames: not with --shard or --resume\n");
+    EXPECT_EQ(run_firsthit(frames(dir, "--stats --raw-video -" + out)).err,
+              "firsthit: error: --raw-video - writes frames to standard output: not with --stats\n");
+    // The encoder goes away: one clear line and a failure, not a SIGPIPE death.
+    const auto r = run_shell("bash -c 'set -o pipefail; " + std::string(FIRSTHIT_BINARY) + " " +
+                             frames(dir, "--raw-video -" + out) + " | head -c 100 >/dev/null'");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("cannot write raw video to standard output: the reader closed it"),
+              std::string::npos)
+        << r.err;
+}
+
+TEST(EncodeScript, StreamingWhileRenderingGivesTheSameMp4AsEncodingTheFiles) {
+    const fs::path dir = tiny_movie("encode_stream");
+    const auto made = run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " +
+                                source_path("scripts/make_movie.sh") + " " +
+                                (dir / "tiny.yaml").string() + " " + (dir / "out").string());
+    ASSERT_EQ(made.status, 0) << made.err;
+    ASSERT_EQ(frame_files(dir / "out" / "tiny").size(), 12u);
+    const auto r = run_shell(source_path("scripts/encode.sh") + " " + (dir / "out" / "tiny").string() +
+                             " " + (dir / "files.mp4").string() + " --fps 12");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(slurp(dir / "out" / "tiny.mp4"), slurp(dir / "files.mp4"));
+    EXPECT_EQ(files_in(dir / "out"), (std::vector<std::string>{"tiny", "tiny.mp4"}));  // no temporaries
+}
+
 TEST(EncodeScript, MakesAnMp4ThatFfprobeReads) {
     const fs::path dir = tiny_movie("encode");
     ASSERT_EQ(run_firsthit(frames(dir, "--out " + (dir / "f").string())).status, 0);
