@@ -12,12 +12,23 @@
 
 namespace fh {
 
+// Three plain T. The shading loops fetch table rows by a per-ray index; GCC
+// vectorises that (one load per lane) for plain fields, not through glm's
+// vectors, whose components are unions.
+template <typename T>
+struct Plain3 {
+    T x = 0, y = 0, z = 0;
+    Plain3() = default;
+    Plain3(const Vec3<T>& v) : x(v.x), y(v.y), z(v.z) {}  // NOLINT: implicit on purpose
+    Vec3<T> vec() const { return {x, y, z}; }
+};
+
 // intensity * strength * (light colour (.) material colour), for one light and
 // one material; the spot light's falloff multiplies it per point.
 template <typename T>
 struct LightTerms {
-    Color<T> diffuse{0};
-    Color<T> specular{0};
+    Plain3<T> diffuse;
+    Plain3<T> specular;
 };
 
 // Up to kClusterSize consecutive triangles and a sphere that holds them all.
@@ -49,11 +60,11 @@ inline constexpr int kClusterSize = 16;
 // Every field is a T, so the fetch vectorises with the arithmetic around it.
 template <typename T>
 struct PrimitiveRow {
-    Vec3<T> anchor{0};        // sphere: the centre; plane, triangle: a point on it
-    Vec3<T> normal{0, 0, 1};  // plane, triangle: the unit normal
+    Plain3<T> anchor;         // sphere: the centre; plane, triangle: a point on it
+    Plain3<T> normal;         // plane, triangle: the unit normal
     T radius = 0;             // sphere
     T sphere = 0;             // 1 for a sphere
-    Color<T> ambient{0};      // the material's ambient term, all ambient lights
+    Plain3<T> ambient;        // the material's ambient term, all ambient lights
     T glazed = 0;             // 1: a hit sends a reflection ray
     T reflectivity = 0;
     T exponent = 0;           // Phong
@@ -67,22 +78,22 @@ struct PrimitiveRow {
 // Branch-free, for the shading loops; used for every hit, so one formula.
 template <typename T>
 FH_HOT_INLINE SurfacePoint<T> surface_at(const PrimitiveRow<T>& row, const Ray<T>& ray, T t) {
+    const Vec3<T> anchor = row.anchor.vec(), normal = row.normal.vec();
     const Vec3<T> p = ray.at(t);
-    const Vec3<T> q = p - row.anchor;
+    const Vec3<T> q = p - anchor;
     const bool sphere = row.sphere != T(0);
     const Vec3<T> radial = glm::normalize(q);  // Sphere::normal_at
-    const Vec3<T> on_sphere = row.anchor + row.radius * radial;
-    const Vec3<T> on_plane = p - glm::dot(row.normal, q) * row.normal;
+    const Vec3<T> on_sphere = anchor + row.radius * radial;
+    const Vec3<T> on_plane = p - glm::dot(normal, q) * normal;
     // Selects per component: a select of whole vectors is a branch to GCC.
     auto pick = [sphere](const Vec3<T>& a, const Vec3<T>& b) {
         return Vec3<T>(sphere ? a.x : b.x, sphere ? a.y : b.y, sphere ? a.z : b.z);
     };
     SurfacePoint<T> sp;
-    sp.normal = pick(radial, row.normal);
+    sp.normal = pick(radial, normal);
     sp.point = pick(on_sphere, on_plane);
     const T facing = glm::dot(sp.normal, ray.direction) > T(0) ? T(-1) : T(1);
     sp.normal *= facing;
-    sp.material = row.material;
     return sp;
 }
 
@@ -122,7 +133,10 @@ struct FlatScene {
         int prim = hit.index;
         if (hit.kind == ShapeKind::plane) prim += ns;
         if (hit.kind == ShapeKind::triangle) prim += ns + np;
-        return surface_at(rows[size_t(prim + 1)], ray, hit.t);
+        const PrimitiveRow<T>& row = rows[size_t(prim + 1)];
+        SurfacePoint<T> sp = surface_at(row, ray, hit.t);
+        sp.material = row.material;
+        return sp;
     }
 };
 

@@ -131,36 +131,22 @@ private:
 
     // Hit points, facing normals, secondary-ray origins, ambient colour.
     void find_surfaces(Wave& w) const {
-        const int n = w.rays.size;
         T t[N];
         std::int32_t prim[N];
         closest_hits(scene_, w.rays, t, prim);
-        // Fetch each ray's row into arrays (scalar: GCC cannot gather here),
-        // so the arithmetic below runs on every lane.
-        alignas(64) T ax[N], ay[N], az[N], mx[N], my[N], mz[N], radius[N], sphere[N];
-        for (int i = 0; i < n; ++i) {
+        const PrimitiveRow<T>* rows = scene_.rows.data();
+        for (int i = 0; i < w.rays.size; ++i) {
             const std::int32_t row = prim[i] + 1;
-            const PrimitiveRow<T>& pr = scene_.rows[size_t(row)];
+            const PrimitiveRow<T>& pr = rows[row];
+            // A miss (row 0) goes through the same arithmetic at t = 0.
+            const SurfacePoint<T> sp = surface_at(pr, w.rays.ray(i), row != 0 ? t[i] : T(0));
             w.row[i] = row;
             w.hit[i] = row != 0;
-            t[i] = row != 0 ? t[i] : T(0);  // a miss: any finite point will do
-            put(ax, ay, az, i, pr.anchor);
-            put(mx, my, mz, i, pr.normal);
-            radius[i] = pr.radius;
-            sphere[i] = pr.sphere;
             w.exponent[i] = pr.exponent;
-            put(w.r, w.g, w.b, i, pr.ambient);
-        }
-        for (int i = 0; i < n; ++i) {
-            PrimitiveRow<T> pr;
-            pr.anchor = at(ax, ay, az, i);
-            pr.normal = at(mx, my, mz, i);
-            pr.radius = radius[i];
-            pr.sphere = sphere[i];
-            const SurfacePoint<T> sp = surface_at(pr, w.rays.ray(i), t[i]);
             put(w.px, w.py, w.pz, i, sp.point);
             put(w.nx, w.ny, w.nz, i, sp.normal);
             put(w.sx, w.sy, w.sz, i, offset_origin(sp.point, sp.normal));
+            put(w.r, w.g, w.b, i, pr.ambient.vec());
         }
     }
 
@@ -212,7 +198,7 @@ private:
         }
         for (int i = 0; i < n; ++i)
             specular[i] = kSpecularTerm && lit[i] != 0 ? intensity[i] * specular[i] : T(0);
-        for (int i = 0; i < n; ++i) {  // scalar: the colours are by row
+        for (int i = 0; i < n; ++i) {
             const LightTerms<T>& k = terms[w.row[i]];
             w.r[i] += diffuse[i] * k.diffuse.x + specular[i] * k.specular.x;
             w.g[i] += diffuse[i] * k.diffuse.y + specular[i] * k.specular.y;
