@@ -1,6 +1,5 @@
-// Small exact-arithmetic helpers for the intersection routines. All of them
-// are branch-free, so the batch loops over rays (render/batch_intersect.h)
-// still vectorise.
+// Small exact-arithmetic helpers for the intersection routines, for one value
+// (V = T) or a packet of them (V = Lanes<T>, core/simd.h) alike.
 //
 // Where the CPU has a fused multiply-add, a*b + c is computed with a single
 // rounding, so a product feeding a sum loses nothing: the sphere test uses
@@ -11,6 +10,8 @@
 
 #include <cmath>
 #include <type_traits>
+
+#include "core/simd.h"
 
 namespace fh {
 
@@ -23,32 +24,33 @@ inline constexpr bool kHardwareFma = false;
 // a*b + c, with one rounding where the CPU fuses it. Without hardware FMA this
 // is the plain expression (std::fma would be a slow library call in the hot
 // loop); the result is then only less accurate, never wrong in kind.
-template <typename T>
-inline T mul_add(T a, T b, T c) {
-    if constexpr (kHardwareFma) return std::fma(a, b, c);
+template <typename V>
+FH_HOT_INLINE V mul_add(V a, V b, V c) {
+    if constexpr (kHardwareFma) return fused_mul_add(a, b, c);
     else return a * b + c;
 }
 
 // a*b - c*d with the same rounding wherever it is used: with FMA the product
 // c*d is rounded and a*b is not; without, both are. (Left to itself the
 // compiler may fuse either product, differently at different call sites.)
-template <typename T>
-inline T mul_sub(T a, T b, T c, T d) {
+template <typename V>
+FH_HOT_INLINE V mul_sub(V a, V b, V c, V d) {
     return mul_add(a, b, -(c * d));
 }
 
 // The rounding error of the product p = fl(a*b): a*b - p, exactly (barring
 // underflow). With FMA one instruction; without, Dekker's product over
 // Veltkamp's split (no compiler may fuse there: the CPU has no FMA).
-template <typename T>
-inline T product_error(T a, T b, T p) {
+template <typename V>
+FH_HOT_INLINE V product_error(V a, V b, V p) {
     if constexpr (kHardwareFma) {
-        return std::fma(a, b, -p);
+        return fused_mul_add(a, b, -p);
     } else {
+        using T = ScalarOf<V>;
         constexpr T split = std::is_same_v<T, float> ? T(4097) : T(134217729);  // 2^12+1, 2^27+1
-        const T ca = split * a, cb = split * b;
-        const T ah = ca - (ca - a), al = a - ah;
-        const T bh = cb - (cb - b), bl = b - bh;
+        const V ca = split * a, cb = split * b;
+        const V ah = ca - (ca - a), al = a - ah;
+        const V bh = cb - (cb - b), bl = b - bh;
         return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
     }
 }
@@ -74,10 +76,10 @@ inline T product_error(T a, T b, T p) {
 // branch of its own, and the batch loops stop vectorising (it may not
 // speculate floating-point operations). The products a and b have other uses
 // than the subtraction, so the compiler does not fuse them into it.
-template <typename T>
-inline T orientation(T px, T py, T qx, T qy) {
-    const T a = px * qy;
-    const T b = py * qx;
+template <typename V>
+FH_HOT_INLINE V orientation(V px, V py, V qx, V qy) {
+    const V a = px * qy;
+    const V b = py * qx;
     return (a - b) + (product_error(px, qy, a) - product_error(py, qx, b));
 }
 

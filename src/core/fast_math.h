@@ -1,13 +1,13 @@
-// Branch-free acos and whole powers for the shading loops. A call to libm's
-// acos or a data-dependent loop stops GCC from vectorising a loop over a
-// batch; these are straight-line code, so a loop of them runs on every AVX2
-// lane. Both are as exact as the library versions (tests/core/test_fast_math.cpp).
+// Branch-free acos and whole powers for shading, on one value (V = T) or a
+// packet of them (V = Lanes<T>, core/simd.h): libm has no packet acos, and
+// std::pow with a per-lane exponent would be one call per lane. Both are as
+// exact as the library versions (tests/core/test_fast_math.cpp).
 #pragma once
 
 #include <iterator>
 #include <cmath>
 
-#include "core/vec.h"
+#include "core/simd.h"
 
 namespace fh {
 
@@ -32,23 +32,24 @@ struct AsinPoly<float> {
                                   0.031100662730802735f, 0.01714923837880633f, 0.033690847169054905f};
 };
 
-template <typename T>
-FH_HOT_INLINE T asin_small(T s) {
+template <typename V>
+FH_HOT_INLINE V asin_small(V s) {
+    using T = ScalarOf<V>;
     constexpr auto& c = AsinPoly<T>::c;
     constexpr int kTerms = int(std::size(c));
     static_assert(kTerms % 2 == 0);
     // P(z) = E(z^2) + z O(z^2): two Horner chains of half the length, which
     // run side by side (a single chain of FMAs waits on each one's latency).
-    const T z = s * s;
-    const T z2 = z * z;
-    T even = c[kTerms - 2], odd = c[kTerms - 1];
-#pragma GCC unroll 16  // straight-line code, so the loop around it vectorises
+    const V z = s * s;
+    const V z2 = z * z;
+    V even = broadcast<V>(c[kTerms - 2]), odd = broadcast<V>(c[kTerms - 1]);
+#pragma GCC unroll 16
     for (int k = kTerms - 4; k >= 0; k -= 2) {
-        even = std::fma(even, z2, c[k]);
-        odd = std::fma(odd, z2, c[k + 1]);
+        even = fused_mul_add(even, z2, broadcast<V>(c[k]));
+        odd = fused_mul_add(odd, z2, broadcast<V>(c[k + 1]));
     }
-    const T p = std::fma(odd, z, even);
-    return std::fma(s * z, p, s);
+    const V p = fused_mul_add(odd, z, even);
+    return fused_mul_add(s * z, p, s);
 }
 
 }  // namespace detail
@@ -57,15 +58,16 @@ FH_HOT_INLINE T asin_small(T s) {
 // |x| <= 1/2: pi/2 - asin(|x|); else 2 asin(sqrt((1 - |x|) / 2)), which is
 // exact in the subtraction (Sterbenz) and keeps acos accurate near 1, where
 // it is steepest. Negative x: pi - acos(|x|).
-template <typename T>
-FH_HOT_INLINE T acos_fast(T x) {
+template <typename V>
+FH_HOT_INLINE V acos_fast(V x) {
+    using T = ScalarOf<V>;
     constexpr T kPi = T(3.14159265358979323846);
-    const T a = std::abs(x);
-    const bool small = a <= T(0.5);
-    const T s = small ? a : std::sqrt((T(1) - a) * T(0.5));
-    const T asin_s = detail::asin_small(s);
-    const T acos_a = small ? kPi / 2 - asin_s : 2 * asin_s;
-    return x < T(0) ? kPi - acos_a : acos_a;
+    const V a = abs(x);
+    const auto small = a <= T(0.5);
+    const V s = select(small, a, sqrt((T(1) - a) * T(0.5)));
+    const V asin_s = detail::asin_small(s);
+    const V acos_a = select(small, kPi / 2 - asin_s, T(2) * asin_s);
+    return select(x < T(0), kPi - acos_a, acos_a);
 }
 
 // x^n for a whole n in [0, kWholePowerLimit], given as a T, by square-and-
@@ -76,18 +78,19 @@ inline constexpr int kWholePowerLimit = 4095;  // 12 bits
 
 // One step: r^2, times x if n >= 2^bit (then n -= 2^bit). Start from r = 1 at
 // the top bit of the largest n and go down to bit 0.
-template <typename T>
-FH_HOT_INLINE void pow_whole_step(T& r, T x, T& n, int bit) {
+template <typename V>
+FH_HOT_INLINE void pow_whole_step(V& r, V x, V& n, int bit) {
+    using T = ScalarOf<V>;
     const T b = T(1 << bit);
-    const bool set = n >= b;
+    const auto set = n >= b;
     r *= r;
-    r = set ? r * x : r;
-    n = set ? n - b : n;
+    r = select(set, r * x, r);
+    n = select(set, n - b, n);
 }
 
-template <typename T>
-FH_HOT_INLINE T pow_whole(T x, T n) {
-    T r = 1;
+template <typename V>
+FH_HOT_INLINE V pow_whole(V x, V n) {
+    V r = broadcast<V>(1);
 #pragma GCC unroll 16
     for (int bit = 11; bit >= 0; --bit) pow_whole_step(r, x, n, bit);
     return r;

@@ -7,7 +7,7 @@
 // holds for a scene scaled by 1e-3 as for one moved 1e6 away from the origin.
 #pragma once
 
-#include "core/vec.h"
+#include "core/packet.h"
 
 namespace fh {
 
@@ -24,11 +24,17 @@ struct OffsetScale<double> {
     static constexpr double absolute = 1e-15;
 };
 
-// normal: unit, pointing to the side the new ray travels into.
+// For each lane; normal: unit, pointing to the side the new ray travels into.
 template <typename T>
-inline Vec3<T> offset_origin(const Vec3<T>& point, const Vec3<T>& normal) {
-    const T eps = OffsetScale<T>::absolute + OffsetScale<T>::relative * max_abs_component(point);
+FH_HOT_INLINE Vec3Lanes<T> offset_origin(const Vec3Lanes<T>& point, const Vec3Lanes<T>& normal) {
+    const Lanes<T> eps = OffsetScale<T>::absolute + OffsetScale<T>::relative * max_abs_component(point);
     return point + eps * normal;
+}
+
+// One point: the packet formula with that point in every lane.
+template <typename T>
+Vec3<T> offset_origin(const Vec3<T>& point, const Vec3<T>& normal) {
+    return offset_origin(Vec3Lanes<T>::splat(point), Vec3Lanes<T>::splat(normal)).lane(0);
 }
 
 }  // namespace fh

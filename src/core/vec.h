@@ -9,8 +9,8 @@
 #include <cmath>
 #include <limits>
 
-// For the bodies of the batch loops (render/batch_intersect.h): they only
-// vectorise when inlined, and GCC's heuristics do not always inline them.
+// For the packet formulas (core/packet.h): they are fast only inlined into
+// the loop that calls them, and GCC's heuristics do not always inline them.
 #define FH_HOT_INLINE inline __attribute__((always_inline))
 #define FH_HOT_LAMBDA __attribute__((always_inline))
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/hit.h"
-#include "core/ray.h"
+#include "core/packet.h"
 
 namespace fh {
 
@@ -26,13 +26,19 @@ struct Plane {
     T distance;
     int material;
 
-    // Branch-free: with a (nearly) parallel ray the division may give inf or
-    // NaN, which the mask discards.
-    FH_HOT_INLINE T intersect(const Ray<T>& ray, T t_min, T t_max) const {
-        const T denom = glm::dot(normal, ray.direction);
-        const T t = (distance - glm::dot(normal, ray.origin)) / denom;
-        const bool crosses = std::abs(denom) >= ParallelLimit<T>::value;
-        return (crosses & (t > t_min) & (t < t_max)) ? t : kInfinity<T>;
+    // Nearest t in (t_min, t_max) for each ray of a packet, or infinity. With
+    // a (nearly) parallel ray the division may give inf or NaN, which the
+    // mask discards.
+    FH_HOT_INLINE Lanes<T> intersect(const RayPacket<T>& ray, T t_min, Lanes<T> t_max) const {
+        const Lanes<T> denom = dot(normal, ray.direction);
+        const Lanes<T> t = (distance - dot(normal, ray.origin)) / denom;
+        const LaneMask<T> crosses = abs(denom) >= ParallelLimit<T>::value;
+        return select(crosses & (t > t_min) & (t < t_max), t, splat(kInfinity<T>));
+    }
+
+    // One ray: the packet formula with that ray in every lane.
+    T intersect(const Ray<T>& ray, T t_min, T t_max) const {
+        return intersect(RayPacket<T>::splat(ray), t_min, splat(t_max))[0];
     }
 
     Vec3<T> normal_at(const Vec3<T>&) const { return normal; }

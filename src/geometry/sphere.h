@@ -16,6 +16,9 @@
 // has c = |f|^2 - r^2 = 0 exactly: its root at the origin (t = 0) never
 // counts as a hit ahead of it, so it finds the far side going in and nothing
 // going out. Requires a unit direction (to rounding).
+//
+// The formula runs on a packet of rays (core/packet.h); one ray is a packet
+// with that ray in every lane, so tests of one ray test the tracer's code.
 #pragma once
 
 #include <algorithm>
@@ -24,7 +27,7 @@
 
 #include "core/exact.h"
 #include "core/hit.h"
-#include "core/ray.h"
+#include "core/packet.h"
 
 namespace fh {
 
@@ -34,38 +37,36 @@ struct Sphere {
     T radius;
     int material;
 
-    // Nearest t in (t_min, t_max), or infinity. Branch-free, so a loop of it
-    // over a batch of rays vectorises (render/batch_intersect.h).
-    FH_HOT_INLINE T intersect(const Ray<T>& ray, T t_min, T t_max) const {
-        const Vec3<T> f = ray.origin - center;
-        const T b = -glm::dot(f, ray.direction);  // t of the closest approach
-        const T disc = discriminant(ray, f, b);
+    // Nearest t in (t_min, t_max) for each ray of a packet, or infinity.
+    FH_HOT_INLINE Lanes<T> intersect(const RayPacket<T>& ray, T t_min, Lanes<T> t_max) const {
+        const Vec3Lanes<T> f = ray.origin - center;
+        const Lanes<T> b = -dot(f, ray.direction);  // t of the closest approach
+        const Lanes<T> disc = discriminant(ray, f, b);
+        // No ray of the packet meets the sphere: skip the square root and the
+        // division. (Most packets, for most spheres.)
+        if (none((disc >= T(0)) & (t_max > t_min))) return splat(kInfinity<T>);
         const T r2 = radius * radius;
         // c = |f|^2 - r^2 is zero, as far as the arithmetic and the origin's own
         // coordinates can tell, for an origin on the sphere: then exactly 0.
-        const T f2 = glm::dot(f, f);
-        const T c_raw = f2 - r2;
+        const Lanes<T> f2 = dot(f, f);
+        const Lanes<T> c_raw = f2 - r2;
         const T eps = std::numeric_limits<T>::epsilon();
-        const T c_error = T(4) * eps * (f2 + r2 + radius * max_abs_component(ray.origin));
-        const T c = std::abs(c_raw) <= c_error ? T(0) : c_raw;
+        const Lanes<T> c_error = T(4) * eps * (f2 + r2 + radius * max_abs_component(ray.origin));
+        const Lanes<T> c = select(abs(c_raw) <= c_error, splat(T(0)), c_raw);
         // q is the root of larger magnitude; the other is c / q (t0 t1 = c).
         // q == 0 only for a ray starting at a tangent point: c / q is then
         // NaN, every comparison below fails, and the ray misses.
-        const T q = b + std::copysign(std::sqrt(std::max(disc, T(0))), b);
-        const T t0 = c / q;
-        const T near = std::min(t0, q);
-        const T far = std::max(t0, q);
-        const T t = near > t_min ? near : far;
-        // & rather than &&: no branches, so loops over it vectorise.
-        return ((disc >= T(0)) & (t > t_min) & (t < t_max)) ? t : kInfinity<T>;
+        const Lanes<T> q = b + copysign(sqrt(max(disc, splat(T(0)))), b);
+        const Lanes<T> t0 = c / q;
+        const Lanes<T> near = min(t0, q);
+        const Lanes<T> far = max(t0, q);
+        const Lanes<T> t = select(near > t_min, near, far);
+        return select((disc >= T(0)) & (t > t_min) & (t < t_max), t, splat(kInfinity<T>));
     }
 
-    // The ray's line meets the sphere iff this is >= 0: the first step of
-    // intersect() on its own, so a batch none of whose rays can hit skips
-    // the rest (render/batch_intersect.h).
-    FH_HOT_INLINE T discriminant(const Ray<T>& ray) const {
-        const Vec3<T> f = ray.origin - center;
-        return discriminant(ray, f, -glm::dot(f, ray.direction));
+    // One ray: the packet formula with that ray in every lane.
+    T intersect(const Ray<T>& ray, T t_min, T t_max) const {
+        return intersect(RayPacket<T>::splat(ray), t_min, splat(t_max))[0];
     }
 
     Vec3<T> normal_at(const Vec3<T>& p) const { return glm::normalize(p - center); }
@@ -78,12 +79,13 @@ struct Sphere {
 
 private:
     // r^2 - |closest approach|^2, f = origin - center, b = -f.d.
-    FH_HOT_INLINE T discriminant(const Ray<T>& ray, const Vec3<T>& f, T b) const {
-        const Vec3<T>& d = ray.direction;
-        const Vec3<T> closest(mul_add(b, d.x, f.x), mul_add(b, d.y, f.y), mul_add(b, d.z, f.z));
+    FH_HOT_INLINE Lanes<T> discriminant(const RayPacket<T>& ray, const Vec3Lanes<T>& f,
+                                        const Lanes<T>& b) const {
+        const Vec3Lanes<T>& d = ray.direction;
+        const Vec3Lanes<T> closest{mul_add(b, d.x, f.x), mul_add(b, d.y, f.y), mul_add(b, d.z, f.z)};
         // closest.d ~ the rounding of b: its square is what that adds to |closest|^2.
-        const T along = glm::dot(closest, d);
-        return mul_add(along, along, radius * radius - glm::dot(closest, closest));
+        const Lanes<T> along = dot(closest, d);
+        return mul_add(along, along, radius * radius - dot(closest, closest));
     }
 };
 

@@ -24,11 +24,9 @@
 // so no ray slips through a face seen edge-on either. A degenerate triangle
 // has a zero normal (make()) and never hits.
 //
-// Vertices 1 and 2 are v0 + e1 and v0 + e2: exact for coordinates on a common
-// grid (the report's, any whole-number or short binary fractions), to one
-// rounding otherwise (where a shared vertex could then differ by an ulp
-// between two triangles). Everything is branch-free, so the batch loops of
-// render/batch_intersect.h vectorise over rays.
+// Everything runs on a packet of rays (core/packet.h); the basis across each
+// ray depends only on the ray, so a packet computes it once (RayBasis) for
+// every triangle it meets.
 #pragma once
 
 #include <algorithm>
@@ -37,15 +35,31 @@
 
 #include "core/exact.h"
 #include "core/hit.h"
-#include "core/ray.h"
+#include "core/packet.h"
 
 namespace fh {
 
+// A packet of rays with two unit vectors across each, e and g: Duff et al.'s
+// branch-free orthonormal basis ("Building an Orthonormal Basis, Revisited",
+// JCGT 2017), well conditioned for every direction.
+template <typename T>
+struct RayBasis {
+    const RayPacket<T>& ray;
+    Vec3Lanes<T> e, g;
+
+    explicit FH_HOT_INLINE RayBasis(const RayPacket<T>& r) : ray(r) {
+        const Vec3Lanes<T>& d = r.direction;
+        const Lanes<T> sg = copysign(splat(T(1)), d.z);
+        const Lanes<T> k = T(-1) / (sg + d.z);
+        const Lanes<T> m = d.x * d.y * k;
+        e = {T(1) + sg * d.x * d.x * k, sg * m, -sg * d.x};
+        g = {m, sg + d.y * d.y * k, -d.y};
+    }
+};
+
 template <typename T>
 struct Triangle {
-    Vec3<T> v0;
-    Vec3<T> e1;      // v1 - v0
-    Vec3<T> e2;      // v2 - v0
+    Vec3<T> v0, v1, v2;
     Vec3<T> normal;  // unit; zero for a degenerate triangle, which never hits
     int material;
 
@@ -54,10 +68,11 @@ struct Triangle {
     // coordinate: no area, collinear vertices, a repeated vertex -- gets a
     // zero normal and never hits.
     static Triangle make(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, int material) {
-        Triangle tri{a, b - a, c - a, Vec3<T>(0), material};
-        const Vec3<T> n = glm::cross(tri.e1, tri.e2);
+        Triangle tri{a, b, c, Vec3<T>(0), material};
+        const Vec3<T> e1 = b - a, e2 = c - a;
+        const Vec3<T> n = glm::cross(e1, e2);
         const T len = glm::length(n);
-        const T longest = std::max({glm::length(tri.e1), glm::length(tri.e2), glm::length(c - b)});
+        const T longest = std::max({glm::length(e1), glm::length(e2), glm::length(c - b)});
         const T size = std::max({max_abs_component(a), max_abs_component(b), max_abs_component(c)});
         const T eps = std::numeric_limits<T>::epsilon();
         if (len > T(32) * eps * size * longest && std::isfinite(len)) tri.normal = n / len;
@@ -66,44 +81,46 @@ struct Triangle {
 
     bool degenerate() const { return normal == Vec3<T>(0); }
 
-    // Nearest t in (t_min, t_max), or infinity.
-    FH_HOT_INLINE T intersect(const Ray<T>& ray, T t_min, T t_max) const {
-        const Vec3<T>& d = ray.direction;
-        // Two unit vectors across the ray, e and g: Duff et al.'s branch-free
-        // orthonormal basis ("Building an Orthonormal Basis, Revisited", JCGT
-        // 2017), well conditioned for every direction.
-        const T sg = std::copysign(T(1), d.z);
-        const T k = T(-1) / (sg + d.z);
-        const T m = d.x * d.y * k;
-        const Vec3<T> e(T(1) + sg * d.x * d.x * k, sg * m, -sg * d.x);
-        const Vec3<T> g(m, sg + d.y * d.y * k, -d.y);
+    // Nearest t in (t_min, t_max) for each ray of a packet, or infinity.
+    FH_HOT_INLINE Lanes<T> intersect(const RayBasis<T>& rays, T t_min, Lanes<T> t_max) const {
+        const Lanes<T> no_hit = splat(kInfinity<T>);
+        if (degenerate()) return no_hit;
+        const RayPacket<T>& ray = rays.ray;
         // Each vertex, from the ray's origin, projected along the ray onto the
         // plane of e and g (where the ray itself is the point (0, 0)). One
         // formula for every vertex, so a shared vertex lands on the same
         // point in each of its triangles.
-        auto along = [](const Vec3<T>& p, const Vec3<T>& q) {
+        auto along = [](const Vec3Lanes<T>& p, const Vec3Lanes<T>& q) FH_HOT_LAMBDA {
             return mul_add(p.x, q.x, mul_add(p.y, q.y, p.z * q.z));
         };
-        const Vec3<T> a = v0 - ray.origin;
-        const Vec3<T> b = (v0 + e1) - ray.origin;
-        const Vec3<T> c = (v0 + e2) - ray.origin;
-        const T ax2 = along(a, e), ay2 = along(a, g);
-        const T bx2 = along(b, e), by2 = along(b, g);
-        const T cx2 = along(c, e), cy2 = along(c, g);
-        const T u = orientation(bx2, by2, cx2, cy2);
-        const T v = orientation(cx2, cy2, ax2, ay2);
-        const T w = orientation(ax2, ay2, bx2, by2);
-        const bool outside = ((u < T(0)) | (v < T(0)) | (w < T(0))) & ((u > T(0)) | (v > T(0)) | (w > T(0)));
+        const Vec3Lanes<T> a = v0 - ray.origin;
+        const Vec3Lanes<T> b = v1 - ray.origin;
+        const Vec3Lanes<T> c = v2 - ray.origin;
+        const Lanes<T> ax2 = along(a, rays.e), ay2 = along(a, rays.g);
+        const Lanes<T> bx2 = along(b, rays.e), by2 = along(b, rays.g);
+        const Lanes<T> cx2 = along(c, rays.e), cy2 = along(c, rays.g);
+        const Lanes<T> u = orientation(bx2, by2, cx2, cy2);
+        const Lanes<T> v = orientation(cx2, cy2, ax2, ay2);
+        const Lanes<T> w = orientation(ax2, ay2, bx2, by2);
+        const LaneMask<T> outside = ((u < T(0)) | (v < T(0)) | (w < T(0))) &
+                                    ((u > T(0)) | (v > T(0)) | (w > T(0)));
+        // No ray of the packet passes: skip the division.
+        if (all(outside | (t_max <= t_min))) return no_hit;
         // t: the vertices' distances along the ray, mixed with the edge
         // functions as barycentric weights. For a ray that passes the test it
         // lies between the nearest and the farthest vertex's, however nearly
         // the ray grazes the plane; det == 0 is a ray in the plane (the
-        // projection has no area). A degenerate triangle (zero normal, see
-        // make()) never hits.
-        const T det = u + v + w;
-        const T t = (u * glm::dot(a, d) + v * glm::dot(b, d) + w * glm::dot(c, d)) / det;
-        const bool has_area = (normal.x != T(0)) | (normal.y != T(0)) | (normal.z != T(0));
-        return (!outside & has_area & (det != T(0)) & (t > t_min) & (t < t_max)) ? t : kInfinity<T>;
+        // projection has no area).
+        const Vec3Lanes<T>& d = ray.direction;
+        const Lanes<T> det = u + v + w;
+        const Lanes<T> t = (u * dot(a, d) + v * dot(b, d) + w * dot(c, d)) / det;
+        return select(~outside & (det != T(0)) & (t > t_min) & (t < t_max), t, no_hit);
+    }
+
+    // One ray: the packet formula with that ray in every lane.
+    T intersect(const Ray<T>& ray, T t_min, T t_max) const {
+        const RayPacket<T> packet = RayPacket<T>::splat(ray);
+        return intersect(RayBasis<T>(packet), t_min, splat(t_max))[0];
     }
 
     Vec3<T> normal_at(const Vec3<T>&) const { return normal; }

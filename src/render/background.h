@@ -3,16 +3,22 @@
 //     s = clamp((dir.z + 1) / 2, 0, 1),  colour = (255, 255 s, 0)
 #pragma once
 
-#include <algorithm>
-
-#include "core/vec.h"
+#include "core/packet.h"
 
 namespace fh {
 
+// For each ray of a packet.
 template <typename T>
-inline Color<T> background(const Vec3<T>& direction) {
-    const T s = std::clamp((direction.z + T(1)) / T(2), T(0), T(1));
-    return {T(255), T(255) * s, T(0)};
+FH_HOT_INLINE ColorLanes<T> background(const Vec3Lanes<T>& direction) {
+    const Lanes<T> s = (direction.z + T(1)) / T(2);
+    const Lanes<T> clamped = select(s < T(0), splat(T(0)), select(T(1) < s, splat(T(1)), s));
+    return {splat(T(255)), T(255) * clamped, splat(T(0))};
+}
+
+// One ray: the packet formula with that direction in every lane.
+template <typename T>
+Color<T> background(const Vec3<T>& direction) {
+    return background(Vec3Lanes<T>::splat(direction)).lane(0);
 }
 
 }  // namespace fh

@@ -35,8 +35,8 @@ std::vector<TriangleCluster<T>> clusters_of(const std::vector<const Triangle<dou
         dvec3 lo(kInfinity<double>), hi(-kInfinity<double>);
         auto corners = [&](const Triangle<double>& t, auto&& fn) {
             fn(t.v0);
-            fn(t.v0 + t.e1);
-            fn(t.v0 + t.e2);
+            fn(t.v1);
+            fn(t.v2);
         };
         for (int i = first; i < first + count; ++i)
             corners(*tris[size_t(i)], [&](const dvec3& p) {
@@ -60,7 +60,6 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
     FlatScene<T> f;
     f.plan = plan;
     const Effects& fx = plan.effects;
-    for (const auto& m : scene.materials) f.materials.push_back(cast<T>(m));
 
     // The ambient term of each material, summed over the ambient lights.
     // A light that is off but simulated anyway (plan not pruned) shines with 0.
@@ -73,58 +72,40 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
             ambient[m] += intensity(a) * mat.ambient * a.color * mat.ambient_color;
         }
     }
-    // Primitive rows in primitive id order, after the no-hit row.
-    std::vector<int> row_material{-1};
-    f.rows.emplace_back();
-    auto add_row = [&](PrimitiveRow<T> row, int material) {
-        const Material<T>& m = f.materials[size_t(material)];
-        row.ambient = Color<T>(ambient[size_t(material)]);
-        row.glazed = m.glazed ? T(1) : T(0);
-        row.reflectivity = m.reflectivity;
-        row.exponent = m.phong_exponent;
-        row.whole = m.phong_whole >= 0 ? T(1) : T(0);
-        row.material = material;
-        f.fractional_exponents |= m.phong_whole < 0 && fx.specular;
-        if (m.phong_whole > 0)
-            f.exponent_bits = std::max(f.exponent_bits, int(std::bit_width(unsigned(m.phong_whole))));
-        f.rows.push_back(row);
-        row_material.push_back(material);
-    };
+    for (size_t m = 0; m < scene.materials.size(); ++m) {
+        const Material<T> mat = cast<T>(scene.materials[m]);
+        f.materials.push_back(mat);
+        f.shading.push_back({Color<T>(ambient[m]), mat.glazed, mat.reflectivity,
+                             mat.phong_exponent, mat.phong_whole >= 0});
+        f.fractional_exponents |= mat.phong_whole < 0 && fx.specular;
+        if (mat.phong_whole > 0)
+            f.exponent_bits = std::max(f.exponent_bits, int(std::bit_width(unsigned(mat.phong_whole))));
+    }
+
+    // Shapes and their surfaces, in primitive id order.
     for (const auto& s : scene.spheres) {
         f.spheres.push_back({Vec3<T>(s.center), T(s.radius), s.material});
-        PrimitiveRow<T> row;
-        row.anchor = Vec3<T>(s.center);
-        row.radius = T(s.radius);
-        row.sphere = 1;
-        add_row(row, s.material);
+        f.surfaces.push_back({true, Vec3<T>(s.center), Vec3<T>(0), T(s.radius), s.material});
     }
     for (const auto& p : scene.planes) {
         f.planes.push_back({Vec3<T>(p.normal), T(p.distance), p.material});
-        PrimitiveRow<T> row;
-        row.anchor = Vec3<T>(p.distance * p.normal);
-        row.normal = Vec3<T>(p.normal);
-        add_row(row, p.material);
+        f.surfaces.push_back({false, Vec3<T>(p.distance * p.normal), Vec3<T>(p.normal), T(0), p.material});
     }
     std::vector<const Triangle<double>*> kept;
     for (const auto& t : scene.triangles) {
         // A triangle without area can never be hit: leave it out of the loop.
-        if (t.normal == dvec3(0)) continue;
+        if (t.degenerate()) continue;
         kept.push_back(&t);
-        f.triangles.push_back({Vec3<T>(t.v0), Vec3<T>(t.e1), Vec3<T>(t.e2), Vec3<T>(t.normal),
+        f.triangles.push_back({Vec3<T>(t.v0), Vec3<T>(t.v1), Vec3<T>(t.v2), Vec3<T>(t.normal),
                                t.material});
-        PrimitiveRow<T> row;
-        row.anchor = Vec3<T>(t.v0);
-        row.normal = Vec3<T>(t.normal);
-        add_row(row, t.material);
+        f.surfaces.push_back({false, Vec3<T>(t.v0), Vec3<T>(t.normal), T(0), t.material});
     }
     f.clusters = clusters_of<T>(kept);
 
     if (!fx.diffuse && !fx.specular) return f;
-    // One row of colour products per light, by primitive row (0 for no hit).
+    // One row of colour products per light, by material.
     auto add_terms = [&](std::vector<LightTerms<T>>& out, const dvec3& color, double strength) {
-        for (const int m : row_material)
-            out.push_back(m < 0 ? LightTerms<T>{}
-                                : terms<T>(scene.materials[size_t(m)], color, strength, fx));
+        for (const auto& m : scene.materials) out.push_back(terms<T>(m, color, strength, fx));
     };
     for (const auto& l : scene.directional_lights) {
         if (!plan.uses(l)) continue;

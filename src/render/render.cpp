@@ -13,65 +13,53 @@ namespace fh {
 
 namespace {
 
-// One sample: clamp each sample on its own (SPEC section 4); a non-finite one
-// is counted and contributes black.
-template <typename T>
-inline Color<T> clamped(Color<T> c, RayCounts& counts) {
-    if (!is_finite(c)) {
-        ++counts.nonfinite_samples;
-        return Color<T>(0);
-    }
-    return glm::clamp(c, Color<T>(0), Color<T>(255));
-}
-
 inline std::uint8_t to_byte(double v) { return std::uint8_t(std::floor(v + 0.5)); }
 
-// Renders a list of pixels (at most kTileSize^2), spp samples each, through
-// the shader in batches, in pixel order; each sample is clamped on its own
-// and the pixel is their mean, rounded.
+// Renders a list of pixels (at most kTileSize^2), spp samples each, a packet
+// of samples at a time in pixel order; each sample is clamped on its own
+// (SPEC section 4) and the pixel is their mean, rounded. A sample that comes
+// out NaN or infinite is counted and contributes black.
 template <typename T, typename S>
-void render_pixels(const S& shader, const CameraRays<T>& rays, const PixelRef* pixels, int count,
+void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef* pixels, int count,
                    int spp, Image& image, RayCounts& counts) {
+    constexpr int W = kLanes<T>;
     const StrataGrid grid = strata_for(spp);
-    constexpr int kBatch = RayBatch<T>::kCapacity;
-    Color<double> sum[kTileSize * kTileSize];
-    RayBatch<T> batch;
-    Color<T> colour[kBatch];
-    int pixel_of[kBatch];  // which listed pixel each ray of the batch samples
-    T sample_x[kBatch], sample_y[kBatch];
-    int n = 0;
-    auto flush = [&] {
-        rays.generate(sample_x, sample_y, n, batch);
-        counts.primary += std::uint64_t(n);
-        shader.trace(batch, colour, counts);  // leaves batch holding its last wave
-        for (int i = 0; i < n; ++i) sum[pixel_of[i]] += Color<double>(clamped(colour[i], counts));
-        n = 0;
-    };
-    auto add_sample = [&](int p, double x, double y) {
-        pixel_of[n] = p;
-        sample_x[n] = T(x);
-        sample_y[n] = T(y);
-        if (++n == kBatch) flush();
-    };
-    for (int p = 0; p < count; ++p) sum[p] = Color<double>(0);
-    if (spp == 1) {  // the centre: no hashing (its own loop, so none is done speculatively)
-        for (int p = 0; p < count; ++p) add_sample(p, pixels[p].x + 0.5, pixels[p].y + 0.5);
-    } else {
-        for (int p = 0; p < count; ++p) {
-            const int x = pixels[p].x, y = pixels[p].y;
-            for (int s = 0; s < spp; ++s) {
-                const SampleOffset o = sample_offset(x, y, s, grid);
-                add_sample(p, x + o.x, y + o.y);
+    alignas(64) double sum[3][kTileSize * kTileSize];
+    for (auto& channel : sum) std::fill_n(channel, count, 0.0);
+    int pixel = 0, sample = 0;  // the next sample to take
+    const int samples = count * spp;
+    for (int first = 0; first < samples; first += W) {
+        const int n = std::min(W, samples - first);
+        alignas(64) T sx[W], sy[W];
+        int pixel_of[W];
+        for (int i = 0; i < W; ++i) {
+            if (i < n) {
+                const PixelRef px = pixels[pixel];
+                const SampleOffset o = sample_offset(px.x, px.y, sample, grid);
+                sx[i] = T(px.x + o.x);
+                sy[i] = T(px.y + o.y);
+                pixel_of[i] = pixel;
+                if (++sample == spp) sample = 0, ++pixel;
+            } else {  // past the last sample: a copy of it, in an inactive lane
+                sx[i] = sx[i - 1];
+                sy[i] = sy[i - 1];
             }
         }
+        const LaneMask<T> active = first_lanes<T>(n);
+        counts.primary += std::uint64_t(n);
+        const ColorLanes<T> c = shader.trace(camera.generate(load(sx), load(sy)), active, counts);
+        const LaneMask<T> ok = finite(c.x) & finite(c.y) & finite(c.z);
+        counts.nonfinite_samples += std::uint64_t(fh::count(active & ~ok));
+        alignas(64) T clamped[3][W];
+        const Lanes<T>* channels[3] = {&c.x, &c.y, &c.z};
+        for (int k = 0; k < 3; ++k)
+            store(clamped[k], select(ok, min(max(*channels[k], splat(T(0))), splat(T(255))), splat(T(0))));
+        for (int i = 0; i < n; ++i)
+            for (int k = 0; k < 3; ++k) sum[k][pixel_of[i]] += double(clamped[k][i]);
     }
-    if (n > 0) flush();
     for (int p = 0; p < count; ++p) {
-        const Color<double> mean = sum[p] / double(spp);
         std::uint8_t* px = image.pixel(pixels[p].x, pixels[p].y);
-        px[0] = to_byte(mean.r);
-        px[1] = to_byte(mean.g);
-        px[2] = to_byte(mean.b);
+        for (int k = 0; k < 3; ++k) px[k] = to_byte(sum[k][p] / double(spp));
     }
 }
 
@@ -92,7 +80,7 @@ FrameResult render_with(const Scene& scene, const Camera& camera, const RenderSe
     const auto start = std::chrono::steady_clock::now();
     const FlatScene<T> flat = FlatScene<T>::build(
         scene, plan_effects(scene, effects, settings.max_depth, settings.prune));
-    const CameraRays<T> rays(camera);
+    const CameraRays<T> camera_rays(camera);
     FrameResult result;
     result.image = Image(camera.width, camera.height);
     result.plan = flat.plan;
@@ -113,7 +101,7 @@ FrameResult render_with(const Scene& scene, const Camera& camera, const RenderSe
         run(tiles, [&](int t, int worker) {
             PixelRef pixels[kChunk];
             const int n = tile_pixels(t, camera.width, camera.height, pixels);
-            render_pixels<T>(shader, rays, pixels, n, settings.samples_per_pixel, result.image,
+            render_pixels<T>(shader, camera_rays, pixels, n, settings.samples_per_pixel, result.image,
                              counts[size_t(worker)].c);
         });
         if (!settings.adaptive) return;
@@ -123,7 +111,7 @@ FrameResult render_with(const Scene& scene, const Camera& camera, const RenderSe
         const int chunks = int((refine.size() + kChunk - 1) / kChunk);
         run(chunks, [&](int c, int worker) {
             const int n = std::min(kChunk, int(refine.size()) - c * kChunk);
-            render_pixels<T>(shader, rays, refine.data() + c * kChunk, n,
+            render_pixels<T>(shader, camera_rays, refine.data() + c * kChunk, n,
                              settings.adaptive_samples, result.image, counts[size_t(worker)].c);
         });
     });

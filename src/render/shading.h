@@ -1,4 +1,4 @@
-// Shading (report 8, SPEC section 4): the colour each ray of a batch brings back.
+// Shading (report 8, SPEC section 4): the colour each ray of a packet brings back.
 //   1. nearest hit; none -> the background
 //   2. ambient
 //   3-5. per directional or spot light, unless a shadow ray finds a blocker:
@@ -7,18 +7,16 @@
 //      up to max_depth reflection rays in a chain.
 // Colours stay unclamped here; the pixel clamps (render/render.cpp).
 //
-// The work goes in waves: the batch's nearest hits, then per light one batch
-// of shadow rays for the hit points that face it, then one batch of
-// reflection rays for the glazed hits, which is the next wave. Glazing adds
-// reflectivity times the next colour, so the report's recursion becomes a
-// running weight per ray.
+// A packet of rays goes through these steps together, each step one SIMD
+// formula over its lanes, with a mask of the rays still in play: the shadow
+// rays of the lit points, the reflection rays of the glazed hits. A step
+// that no lane needs is skipped. Glazing adds reflectivity times the next
+// colour, so the report's recursion becomes a loop with a running weight.
 //
-// Every per-ray step is a branch-free loop over the wave in structure-of-
-// arrays form, which GCC vectorises across AVX2 lanes: misses run through
-// the same arithmetic as hits (with the no-hit row of FlatScene::rows) and
-// are masked at the end. Only gathering the rays that go on -- shadow rays
-// of lit points, reflection rays of glazed hits -- and adding each ray's
-// colour to its camera ray are scalar loops, of a few stores per ray.
+// What a hit's primitive and material contribute (centre, normal, colour
+// terms) is the same for every lane that hit that primitive: it is looked up
+// once per primitive a packet sees -- mostly one or two -- and blended into
+// the lanes that hit it.
 //
 // F (ShaderFeature bits) fixes at compile time whether shadow rays, the
 // specular term and glazing exist at all; with_shader picks the variant the
@@ -31,7 +29,7 @@
 #include "core/fast_math.h"
 #include "core/offset.h"
 #include "render/background.h"
-#include "render/batch_intersect.h"
+#include "render/packet_intersect.h"
 #include "render/stats.h"
 
 namespace fh {
@@ -42,208 +40,153 @@ public:
     static constexpr bool kShadowRays = (F & kShadows) != 0;
     static constexpr bool kSpecularTerm = (F & kSpecular) != 0;
     static constexpr bool kReflections = (F & kGlazing) != 0;
-    static constexpr int N = RayBatch<T>::kCapacity;
-    using Mask = BlockMask<T>;
 
     explicit Shader(const FlatScene<T>& scene) : scene_(scene) {}
 
-    // colours[i] = the colour of camera ray i (unclamped). The batch is used
-    // as the first wave and is left holding the last one.
-    void trace(RayBatch<T>& camera_rays, Color<T>* colours, RayCounts& counts) const {
-        Wave w(camera_rays);
-        for (int i = 0; i < w.rays.size; ++i) {
-            w.slot[i] = i;
-            w.weight[i] = 1;
-            colours[i] = Color<T>(0);
-        }
-        for (int depth = 0; w.rays.size > 0; ++depth) {
-            shade_wave(w, colours, counts);
+    // The colour of each active ray of a packet (unclamped); 0 in the others.
+    ColorLanes<T> trace(RayPacket<T> ray, LaneMask<T> active, RayCounts& counts) const {
+        const Lanes<T> zero = splat(T(0));
+        const ColorLanes<T> black{zero, zero, zero};
+        ColorLanes<T> colour = black;
+        Lanes<T> weight = splat(T(1));
+        for (int depth = 0;; ++depth) {
+            const PacketHits<T> h = closest_hits(scene_, ray, active);
+            const LaneMask<T> hit = h.prim != kNoHit;
+            ColorLanes<T> local = select(active & ~hit, background(ray.direction), black);
+            if (none(hit)) {
+                colour += weight * local;
+                break;
+            }
+            Hits hits;
+            surfaces(ray, h, hit, hits);
+            local += hits.ambient;
+            add_lights(ray, hits, hit, local, counts);
+            colour += weight * local;
             if constexpr (!kReflections) break;
             if (depth >= scene_.plan.max_depth) break;
-            reflect_wave(w);
-            counts.reflection += std::uint64_t(w.rays.size);
+            active = hit & hits.glazed;
+            if (none(active)) break;
+            counts.reflection += std::uint64_t(count(active));
+            weight *= hits.reflectivity;
+            // Unit to rounding, as the direction and the normal are: no normalize needed.
+            const Vec3Lanes<T>& d = ray.direction;
+            ray = {hits.origin, d - (T(2) * dot(d, hits.normal)) * hits.normal};
         }
+        return colour;
     }
 
-    // One ray on its own (tests, debugging): the same path with a batch of one.
+    // One ray on its own (tests, debugging): a packet of one.
     Color<T> trace(const Ray<T>& ray, RayCounts& counts) const {
-        RayBatch<T> b;
-        b.push(ray);
-        Color<T> c;
-        trace(b, &c, counts);
-        return c;
+        return trace(RayPacket<T>::splat(ray), first_lanes<T>(1), counts).lane(0);
     }
 
 private:
-    // The rays in flight and, for each, what its hit looks like. Scratch of
-    // tens of kilobytes: constructed without zeroing it.
-    struct Wave {
-        explicit Wave(RayBatch<T>& batch) : rays(batch) {}
-        RayBatch<T>& rays;
-        int slot[N];  // the camera ray each adds to
-        T weight[N];  // and with what weight
-        std::int32_t row[N];  // FlatScene::rows index: primitive id + 1, 0 for a miss
-        Mask hit[N];          // row != 0, as wide as T
-        alignas(64) T px[N], py[N], pz[N];  // the hit point
-        alignas(64) T nx[N], ny[N], nz[N];  // the normal, facing the ray
-        alignas(64) T sx[N], sy[N], sz[N];  // where secondary rays start
-        alignas(64) T exponent[N];          // Phong exponent of the hit's material
-        alignas(64) T r[N], g[N], b[N];     // the colour the ray brings back
+    // What each lane's hit looks like: 0 in the lanes without one (an
+    // unlit lane adds its ambient term, a weight its reflectivity).
+    struct Hits {
+        Vec3Lanes<T> point, normal;  // normal: unit, facing the ray
+        Vec3Lanes<T> origin;         // where secondary rays start
+        ColorLanes<T> ambient;
+        Lanes<T> exponent, reflectivity;
+        LaneMask<T> glazed, whole;
+        LaneInts<T> material;
     };
 
-    // Vectors of a wave's arrays, by ray.
-    static FH_HOT_INLINE Vec3<T> at(const T* x, const T* y, const T* z, int i) {
-        return {x[i], y[i], z[i]};
-    }
-    static FH_HOT_INLINE void put(T* x, T* y, T* z, int i, const Vec3<T>& v) {
-        x[i] = v.x;
-        y[i] = v.y;
-        z[i] = v.z;
+    // Calls fn(id, lanes) for each distinct id among the lanes in mask, with
+    // the lanes that hold it.
+    template <typename Fn>
+    static FH_HOT_INLINE void for_each_distinct(const LaneInts<T>& ids, LaneMask<T> mask, Fn&& fn) {
+        while (any(mask)) {
+            int lane = 0;
+            while (mask[lane] == 0) ++lane;
+            const LaneMask<T> same = mask & (ids == ids[lane]);
+            fn(int(ids[lane]), same);
+            mask &= ~same;
+        }
     }
 
-    void shade_wave(Wave& w, Color<T>* colours, RayCounts& counts) const {
-        find_surfaces(w);
+    // Hit points, facing normals, secondary-ray origins, material terms.
+    FH_HOT_INLINE void surfaces(const RayPacket<T>& ray, const PacketHits<T>& h,
+                                const LaneMask<T>& hit, Hits& s) const {
+        const Lanes<T> zero = splat(T(0));
+        const Vec3Lanes<T> none3{zero, zero, zero};
+        s.point = s.normal = s.ambient = none3;
+        s.exponent = s.reflectivity = zero;
+        s.glazed = s.whole = s.material = LaneMask<T>{};
+        const Vec3Lanes<T> p = ray.at(select(hit, h.t, zero));
+        for_each_distinct(h.prim, hit, [&](int prim, const LaneMask<T>& lanes) FH_HOT_LAMBDA {
+            const PrimitiveSurface<T>& surface = scene_.surfaces[size_t(prim)];
+            Vec3Lanes<T> point, normal;
+            surface.project(p, point, normal);
+            s.point = select(lanes, point, s.point);
+            s.normal = select(lanes, normal, s.normal);
+            const MaterialShading<T>& m = scene_.shading[size_t(surface.material)];
+            s.ambient = select(lanes, m.ambient, s.ambient);
+            s.exponent = select(lanes, splat(m.exponent), s.exponent);
+            s.reflectivity = select(lanes, splat(m.reflectivity), s.reflectivity);
+            s.glazed |= m.glazed ? lanes : LaneMask<T>{};
+            s.whole |= m.whole ? lanes : LaneMask<T>{};
+            s.material = select(lanes, LaneInts<T>{} + surface.material, s.material);
+        });
+        s.normal = FlatScene<T>::facing(s.normal, ray.direction);
+        s.origin = offset_origin(s.point, s.normal);
+    }
+
+    void add_lights(const RayPacket<T>& ray, const Hits& s, const LaneMask<T>& hit,
+                    ColorLanes<T>& local, RayCounts& counts) const {
+        const size_t materials = scene_.materials.size();
         for (size_t l = 0; l < scene_.directional_lights.size(); ++l) {
-            const Vec3<T> to_light = scene_.directional_lights[l].to_light();
-            add_light(w, &scene_.directional_terms[l * scene_.rows.size()], counts,
-                      [to_light](const Vec3<T>&) FH_HOT_LAMBDA {
-                          return SpotRadiance<T>{to_light, kInfinity<T>, T(1)};
-                      });
+            const LightSample<T> sample{Vec3Lanes<T>::splat(scene_.directional_lights[l].to_light()),
+                                        splat(kInfinity<T>), splat(T(1))};
+            add_light(ray, s, hit, sample, &scene_.directional_terms[l * materials], local, counts);
         }
-        for (size_t l = 0; l < scene_.spot_lights.size(); ++l) {
-            // A copy, not a reference: the loop over the wave keeps it in registers.
-            add_light(w, &scene_.spot_terms[l * scene_.rows.size()], counts,
-                      [spot = scene_.spot_lights[l],
-                       widest = scene_.spot_lights[l].widest_angle()](const Vec3<T>& p)
-                          FH_HOT_LAMBDA { return spot.radiance_at(p, widest); });
-        }
-        const int n = w.rays.size;
-        for (int i = 0; i < n; ++i) {  // misses see the sky
-            const Color<T> sky = background(Vec3<T>(w.rays.dx[i], w.rays.dy[i], w.rays.dz[i]));
-            const bool hit = w.hit[i] != 0;
-            w.r[i] = hit ? w.r[i] : sky.x;
-            w.g[i] = hit ? w.g[i] : sky.y;
-            w.b[i] = hit ? w.b[i] : sky.z;
-        }
-        for (int i = 0; i < n; ++i)
-            colours[w.slot[i]] += w.weight[i] * Color<T>(w.r[i], w.g[i], w.b[i]);
+        for (size_t l = 0; l < scene_.spot_lights.size(); ++l)
+            add_light(ray, s, hit, scene_.spot_lights[l].radiance_at(s.point),
+                      &scene_.spot_terms[l * materials], local, counts);
     }
 
-    // Hit points, facing normals, secondary-ray origins, ambient colour.
-    void find_surfaces(Wave& w) const {
-        T t[N];
-        std::int32_t prim[N];
-        closest_hits(scene_, w.rays, t, prim);
-        const PrimitiveRow<T>* rows = scene_.rows.data();
-        for (int i = 0; i < w.rays.size; ++i) {
-            const std::int32_t row = prim[i] + 1;
-            const PrimitiveRow<T>& pr = rows[row];
-            // A miss (row 0) goes through the same arithmetic at t = 0.
-            const SurfacePoint<T> sp = surface_at(pr, w.rays.ray(i), row != 0 ? t[i] : T(0));
-            w.row[i] = row;
-            w.hit[i] = row != 0;
-            w.exponent[i] = pr.exponent;
-            put(w.px, w.py, w.pz, i, sp.point);
-            put(w.nx, w.ny, w.nz, i, sp.normal);
-            put(w.sx, w.sy, w.sz, i, offset_origin(sp.point, sp.normal));
-            put(w.r, w.g, w.b, i, pr.ambient.vec());
+    // Diffuse and specular of one light (report 8.2-8.3): the light's sample
+    // at each point (direction, distance, intensity) and its colour products
+    // with each material.
+    FH_HOT_INLINE void add_light(const RayPacket<T>& ray, const Hits& s, const LaneMask<T>& hit,
+                                 const LightSample<T>& light, const LightTerms<T>* terms,
+                                 ColorLanes<T>& local, RayCounts& counts) const {
+        const Lanes<T> zero = splat(T(0));
+        const Lanes<T> n_dot_l = dot(s.normal, light.to_light);
+        // Faces away or gets nothing: no diffuse, no specular, no shadow ray.
+        // (intensity >= 0, so one product tests both.)
+        LaneMask<T> lit = hit & (light.intensity * n_dot_l > T(0));
+        if (none(lit)) return;
+        if constexpr (kShadowRays) {
+            counts.shadow += std::uint64_t(count(lit));
+            lit &= ~occluded(scene_, {s.origin, light.to_light}, light.distance, lit);
+            if (none(lit)) return;
         }
-    }
-
-    // Diffuse and specular of one light (report 8.2-8.3). light_at(point)
-    // gives the direction to the light, its distance and its intensity
-    // there; terms: the light's colour products, by primitive row.
-    template <typename LightAt>
-    void add_light(Wave& w, const LightTerms<T>* terms, RayCounts& counts,
-                   const LightAt light_at) const {
-        const int n = w.rays.size;
-        alignas(64) T lx[N], ly[N], lz[N], distance[N], intensity[N], n_dot_l[N];
-        Mask lit[N];
-        for (int i = 0; i < n; ++i) {
-            const SpotRadiance<T> s = light_at(at(w.px, w.py, w.pz, i));
-            const T ndl = glm::dot(at(w.nx, w.ny, w.nz, i), s.to_light);
-            put(lx, ly, lz, i, s.to_light);
-            distance[i] = s.distance;
-            intensity[i] = s.intensity;
-            n_dot_l[i] = ndl;
-            // Faces away or gets nothing: no diffuse, no specular, no shadow
-            // ray. (intensity >= 0, so one product tests both.)
-            lit[i] = ((w.hit[i] != 0) & (s.intensity * ndl > T(0))) ? 1 : 0;
-        }
-        if constexpr (kShadowRays) cast_shadows(w, lx, ly, lz, distance, lit, counts);
-
-        // The weights of the light's diffuse and specular colours at each
-        // point: intensity n.l and intensity (n.h)^exponent, h the half vector.
-        alignas(64) T diffuse[N], specular[N], n_dot_h[N], exponent[N];
-        for (int i = 0; i < n; ++i) {
-            // A select, not a product with 0: an unlit lane may hold NaN.
-            diffuse[i] = lit[i] != 0 ? intensity[i] * n_dot_l[i] : T(0);
-            specular[i] = 1;
-            if constexpr (kSpecularTerm) {
-                const Vec3<T> view(-w.rays.dx[i], -w.rays.dy[i], -w.rays.dz[i]);
-                const Vec3<T> h = glm::normalize(at(lx, ly, lz, i) + view);
-                n_dot_h[i] = std::max(T(0), glm::dot(at(w.nx, w.ny, w.nz, i), h));
-                exponent[i] = w.exponent[i];
-            }
-        }
+        // A select, not a product with 0: an unlit lane may hold NaN.
+        const Lanes<T> diffuse = select(lit, light.intensity * n_dot_l, zero);
+        Lanes<T> specular = zero;
         if constexpr (kSpecularTerm) {
-            // Square-and-multiply, one pass per bit of the scene's largest
-            // exponent (7 for the report's 100) rather than 12 per point.
+            // intensity (n.h)^exponent, h the half vector of the light and the viewer.
+            const Vec3Lanes<T> h = normalize(light.to_light - ray.direction);
+            const Lanes<T> n_dot_h = max(zero, dot(s.normal, h));
+            // Square-and-multiply, one step per bit of the scene's largest
+            // exponent (7 for the report's 100).
+            Lanes<T> power = splat(T(1)), exponent = s.exponent;
             for (int bit = scene_.exponent_bits - 1; bit >= 0; --bit)
-                for (int i = 0; i < n; ++i) pow_whole_step(specular[i], n_dot_h[i], exponent[i], bit);
+                pow_whole_step(power, n_dot_h, exponent, bit);
             if (scene_.fractional_exponents)  // rare: std::pow where needed
-                for (int i = 0; i < n; ++i)
-                    if (scene_.rows[size_t(w.row[i])].whole == T(0))
-                        specular[i] = std::pow(n_dot_h[i], w.exponent[i]);
+                for (int i = 0; i < kLanes<T>; ++i)
+                    if (lit[i] && !s.whole[i]) power[i] = std::pow(n_dot_h[i], s.exponent[i]);
+            specular = select(lit, light.intensity * power, zero);
         }
-        for (int i = 0; i < n; ++i)
-            specular[i] = kSpecularTerm && lit[i] != 0 ? intensity[i] * specular[i] : T(0);
-        for (int i = 0; i < n; ++i) {
-            const LightTerms<T>& k = terms[w.row[i]];
-            w.r[i] += diffuse[i] * k.diffuse.x + specular[i] * k.specular.x;
-            w.g[i] += diffuse[i] * k.diffuse.y + specular[i] * k.specular.y;
-            w.b[i] += diffuse[i] * k.diffuse.z + specular[i] * k.specular.z;
-        }
-    }
-
-    // One shadow ray per lit point, toward the light and no farther; lit
-    // is cleared where something blocks it.
-    void cast_shadows(const Wave& w, const T* lx, const T* ly, const T* lz, const T* distance,
-                      Mask* lit, RayCounts& counts) const {
-        RayBatch<T> shadow;
-        int from[N];
-        int m = 0;
-        for (int i = 0; i < w.rays.size; ++i) {  // written always, kept if lit
-            shadow.set(m, {at(w.sx, w.sy, w.sz, i), at(lx, ly, lz, i)}, distance[i]);
-            from[m] = i;
-            m += int(lit[i]);
-        }
-        shadow.size = m;
-        Mask blocked[N];
-        find_blocked(scene_, shadow, blocked);
-        for (int j = 0; j < m; ++j) lit[from[j]] = 1 - blocked[j];
-        counts.shadow += std::uint64_t(m);
-    }
-
-    // The glazed hits' mirrored rays become the next wave.
-    void reflect_wave(Wave& w) const {
-        const int n = w.rays.size;
-        alignas(64) T rx[N], ry[N], rz[N];
-        for (int i = 0; i < n; ++i) {
-            const Vec3<T> d(w.rays.dx[i], w.rays.dy[i], w.rays.dz[i]);
-            const Vec3<T> normal = at(w.nx, w.ny, w.nz, i);
-            // Unit to rounding, as d and the normal are: no normalize needed.
-            put(rx, ry, rz, i, d - T(2) * glm::dot(d, normal) * normal);
-        }
-        int m = 0;
-        for (int i = 0; i < n; ++i) {  // written always, kept if glazed; m <= i
-            const PrimitiveRow<T>& pr = scene_.rows[size_t(w.row[i])];  // a miss: not glazed
-            w.rays.set(m, {at(w.sx, w.sy, w.sz, i), at(rx, ry, rz, i)});
-            w.slot[m] = w.slot[i];
-            w.weight[m] = w.weight[i] * pr.reflectivity;
-            m += int(pr.glazed != T(0));
-        }
-        w.rays.size = m;
+        ColorLanes<T> kd{zero, zero, zero}, ks{zero, zero, zero};
+        for_each_distinct(s.material, lit, [&](int m, const LaneMask<T>& lanes) FH_HOT_LAMBDA {
+            kd = select(lanes, terms[m].diffuse, kd);
+            ks = select(lanes, terms[m].specular, ks);
+        });
+        local.x += diffuse * kd.x + specular * ks.x;
+        local.y += diffuse * kd.y + specular * ks.y;
+        local.z += diffuse * kd.z + specular * ks.z;
     }
 
     const FlatScene<T>& scene_;

@@ -10,7 +10,7 @@
 
 #include <string>
 
-#include "core/ray_batch.h"
+#include "core/packet.h"
 
 namespace fh {
 
@@ -60,33 +60,17 @@ public:
         forward_ = Vec3<T>(-b.w * (perspective_ ? cam.projection_distance : 1.0));
     }
 
-    Ray<T> generate(T px, T py) const {
-        return perspective_ ? perspective_ray(px, py) : orthographic_ray(px, py);
+    // The camera rays through the pixel positions of each lane.
+    FH_HOT_INLINE RayPacket<T> generate(const Lanes<T>& px, const Lanes<T>& py) const {
+        const Vec3Lanes<T> offset = (x0_ + dx_ * px) * u_ + (y0_ - dy_ * py) * v_;
+        if (perspective_) return {Vec3Lanes<T>::splat(eye_), normalize(forward_ + offset)};
+        return {eye_ + offset, Vec3Lanes<T>::splat(forward_)};
     }
 
-    // The camera rays of n pixel positions, as the batch's first n rays: one
-    // branch-free loop per projection, which vectorises (a scalar normalize
-    // per camera ray is a chain of divisions). Same arithmetic as generate().
-    void generate(const T* px, const T* py, int n, RayBatch<T>& out) const {
-        if (perspective_) {
-            for (int i = 0; i < n; ++i) out.set(i, perspective_ray(px[i], py[i]));
-        } else {
-            for (int i = 0; i < n; ++i) out.set(i, orthographic_ray(px[i], py[i]));
-        }
-        out.size = n;
-    }
+    // One ray: the packet formula with that position in every lane.
+    Ray<T> generate(T px, T py) const { return generate(splat(px), splat(py)).lane(0); }
 
 private:
-    FH_HOT_INLINE Vec3<T> offset(T px, T py) const {
-        return (x0_ + dx_ * px) * u_ + (y0_ - dy_ * py) * v_;
-    }
-    FH_HOT_INLINE Ray<T> perspective_ray(T px, T py) const {
-        return {eye_, glm::normalize(forward_ + offset(px, py))};
-    }
-    FH_HOT_INLINE Ray<T> orthographic_ray(T px, T py) const {
-        return {eye_ + offset(px, py), forward_};
-    }
-
     bool perspective_ = true;
     Vec3<T> eye_, u_, v_, forward_;
     T x0_, y0_, dx_, dy_;

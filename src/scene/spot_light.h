@@ -12,14 +12,24 @@
 #include <string>
 
 #include "core/fast_math.h"
+#include "core/packet.h"
 
 namespace fh {
 
+// What one light gives each point of a packet.
+template <typename T>
+struct LightSample {
+    Vec3Lanes<T> to_light;  // unit, from the point toward the light
+    Lanes<T> distance;      // how far a shadow ray goes (infinity: a directional light)
+    Lanes<T> intensity;     // 0: the point gets nothing from this light
+};
+
+// The same for one point (tests, debugging).
 template <typename T>
 struct SpotRadiance {
-    Vec3<T> to_light{0};  // unit, from the point toward the light
+    Vec3<T> to_light{0};
     T distance = 0;
-    T intensity = 0;      // 0: the point gets nothing from this light
+    T intensity = 0;
 };
 
 template <typename T>
@@ -33,37 +43,40 @@ struct SpotLight {
     bool on = true;
     bool cone_test = true;  // false when max_angle >= pi: every theta is inside
 
-    SpotRadiance<T> radiance_at(const Vec3<T>& p) const { return radiance_at(p, widest_angle()); }
-
     // The widest theta that gets light.
     T widest_angle() const { return cone_test ? max_angle : kInfinity<T>; }
 
-    // Branch-free, so the shading loop over a batch of points vectorises;
-    // widest = widest_angle(), computed once outside that loop.
-    FH_HOT_INLINE SpotRadiance<T> radiance_at(const Vec3<T>& p, T widest) const {
-        const Vec3<T> delta = position - p;
-        const T d2 = glm::dot(delta, delta);
+    // For each point of a packet. Branch-free.
+    FH_HOT_INLINE LightSample<T> radiance_at(const Vec3Lanes<T>& p) const {
+        const Vec3Lanes<T> delta = position - p;
+        const Lanes<T> d2 = dot(delta, delta);
         // At the light's own position the direction is undefined: no light.
-        const bool defined = (d2 > T(0)) & (d2 < kInfinity<T>);
-        const T inv_distance = defined ? T(1) / std::sqrt(d2) : T(0);
-        SpotRadiance<T> r;
+        const LaneMask<T> defined = (d2 > T(0)) & (d2 < kInfinity<T>);
+        const Lanes<T> inv_distance = select(defined, T(1) / sqrt(d2), splat(T(0)));
+        LightSample<T> r;
         r.distance = d2 * inv_distance;
         r.to_light = delta * inv_distance;
         // Rounding can push the cosine just past +-1, outside acos's domain.
-        const T cos_theta = std::min(T(1), std::max(T(-1), -glm::dot(r.to_light, axis)));
-        const T theta = acos_fast(cos_theta);
-        const bool inside = theta <= widest;
+        const Lanes<T> cos_theta = min(splat(T(1)), max(splat(T(-1)), -dot(r.to_light, axis)));
+        const Lanes<T> theta = acos_fast(cos_theta);
+        const LaneMask<T> inside = theta <= widest_angle();
         // Right next to the light, d^2 can be so small (subnormal) that I / d^2
         // overflows to infinity. Capped at sqrt(max): finite, with room for the
         // colour products, and saturating every pixel it reaches anyway.
-        // (Products with reciprocals, not divisions: the loop's slowest
+        // (Products with reciprocals, not divisions: the slowest
         // instructions. falloff * inv_distance first, so a falloff of 0
         // stays 0 however large inv_distance^2 would be.)
         const T cap = std::sqrt(std::numeric_limits<T>::max());
-        const T cone = std::max(T(0), T(1) - theta * (T(1) / max_angle));
-        const T falloff = std::min(cap, intensity * (cone * inv_distance) * inv_distance);
-        r.intensity = (defined & inside) ? falloff : T(0);
+        const Lanes<T> cone = max(splat(T(0)), T(1) - theta * (T(1) / max_angle));
+        const Lanes<T> falloff = min(splat(cap), intensity * (cone * inv_distance) * inv_distance);
+        r.intensity = select(defined & inside, falloff, splat(T(0)));
         return r;
+    }
+
+    // One point: the packet formula with that point in every lane.
+    SpotRadiance<T> radiance_at(const Vec3<T>& p) const {
+        const LightSample<T> s = radiance_at(Vec3Lanes<T>::splat(p));
+        return {s.to_light.lane(0), s.distance[0], s.intensity[0]};
     }
 };
 

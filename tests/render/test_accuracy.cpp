@@ -7,7 +7,7 @@
 
 #include "io/scene_loader.h"
 #include "render/adaptive.h"
-#include "render/batch_intersect.h"
+#include "render/packet_intersect.h"
 #include "render/image_compare.h"
 #include "render/render.h"
 

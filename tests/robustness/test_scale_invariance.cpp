@@ -45,7 +45,7 @@ Scene transformed(Scene s) {
     }
     for (auto& p : s.planes) p.distance = kScale * p.distance + glm::dot(p.normal, kShift);
     for (auto& t : s.triangles) {
-        const dvec3 a = t.v0, b = t.v0 + t.e1, c = t.v0 + t.e2;
+        const dvec3 a = t.v0, b = t.v1, c = t.v2;
         t = Triangle<double>::make(move(a), move(b), move(c), t.material);
     }
     for (auto& l : s.spot_lights) {

@@ -118,8 +118,18 @@ TYPED_TEST(TriangleRobust, TetrahedronIsWatertightAtEdgesAndVertices) {
             ++misses;
         } else if (!incident[size_t(face)] || glm::dot(out[size_t(face)], dvec3(dir)) >= 0) {
             ++through_back;
-        } else if (std::abs(double(best) - distance) > 1e-5 * distance + 1e-5) {
-            ++wrong_distance;
+        } else {
+            // The distance along the ray as traced -- its origin and direction
+            // rounded to T -- to the plane of the face it hit, in double. (Not
+            // `distance`: at n.d = 0.02, rounding the origin to float alone
+            // moves the hit by ulp/0.02 ~ 1e-5 along the ray.)
+            // The origin is read back through memory: GCC 12's SLP vectoriser
+            // otherwise reuses the double it was rounded from (seen here).
+            volatile T traced[3] = {o.x, o.y, o.z};
+            const dvec3 origin(traced[0], traced[1], traced[2]);
+            const dvec3 n = out[size_t(face)], on_face = kVertex[size_t(kFace[size_t(face)][0])];
+            const double exact = glm::dot(n, on_face - origin) / glm::dot(n, dvec3(dir));
+            if (std::abs(double(best) - exact) > 1e-5 * exact + 1e-5) ++wrong_distance;
         }
     }
     EXPECT_EQ(nan, 0);
