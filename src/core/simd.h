@@ -153,6 +153,18 @@ FH_HOT_INLINE bool all(bool m) { return m; }
 // How many lanes are set.
 template <typename M>
 FH_HOT_INLINE int count(const M& m) {
+#if defined(__AVX512F__)
+    if constexpr (sizeof(M) == 64 && sizeof(m[0]) == 8)
+        return __builtin_popcount(_mm512_test_epi64_mask(__m512i(m), __m512i(m)));
+    if constexpr (sizeof(M) == 64 && sizeof(m[0]) == 4)
+        return __builtin_popcount(_mm512_test_epi32_mask(__m512i(m), __m512i(m)));
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(M) == 32 && sizeof(m[0]) == 8)
+        return __builtin_popcount(unsigned(_mm256_movemask_pd(__m256d(m))));
+    if constexpr (sizeof(M) == 32 && sizeof(m[0]) == 4)
+        return __builtin_popcount(unsigned(_mm256_movemask_ps(__m256(m))));
+#endif
     constexpr int n = int(sizeof(M) / sizeof(m[0]));
     int c = 0;
     for (int i = 0; i < n; ++i) c += m[i] != 0;

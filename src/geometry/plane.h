@@ -31,7 +31,11 @@ struct Plane {
     // mask discards.
     FH_HOT_INLINE Lanes<T> intersect(const RayPacket<T>& ray, T t_min, Lanes<T> t_max) const {
         const Lanes<T> denom = dot(normal, ray.direction);
-        const Lanes<T> t = (distance - dot(normal, ray.origin)) / denom;
+        const Lanes<T> height = distance - dot(normal, ray.origin);  // t = height / denom
+        // No ray of the packet heads toward the plane (t <= 0: most shadow
+        // and reflection rays leave it): skip the division.
+        if (none((height * denom > T(0)) & (t_max > t_min))) return splat(kInfinity<T>);
+        const Lanes<T> t = height / denom;
         const LaneMask<T> crosses = abs(denom) >= ParallelLimit<T>::value;
         return select(crosses & (t > t_min) & (t < t_max), t, splat(kInfinity<T>));
     }

@@ -26,14 +26,14 @@ struct TriangleCluster {
 
     // Per lane: the ray meets the bounding sphere ahead of its origin (or
     // starts inside it). A plain test is enough for a padded bound; the
-    // robust one of Sphere costs more.
+    // robust one of Sphere costs more. The far root b + sqrt(disc) is ahead
+    // when b > 0 or disc > b^2, which needs no square root.
     FH_HOT_INLINE LaneMask<T> reaches(const RayPacket<T>& ray) const {
         const Vec3Lanes<T> f = ray.origin - center;
         const Lanes<T> b = -dot(f, ray.direction);
         const Vec3Lanes<T> closest = f + b * ray.direction;
         const Lanes<T> disc = radius2 - dot(closest, closest);
-        const Lanes<T> far = b + sqrt(max(disc, splat(T(0))));
-        return (disc >= T(0)) & (far > T(0));
+        return (disc >= T(0)) & ((b > T(0)) | (disc > b * b));
     }
 };
 inline constexpr int kClusterSize = 16;

@@ -54,12 +54,21 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
         const Lanes<T>* channels[3] = {&c.x, &c.y, &c.z};
         for (int k = 0; k < 3; ++k)
             store(clamped[k], select(ok, min(max(*channels[k], splat(T(0))), splat(T(255))), splat(T(0))));
-        for (int i = 0; i < n; ++i)
-            for (int k = 0; k < 3; ++k) sum[k][pixel_of[i]] += double(clamped[k][i]);
+        if (spp == 1) {  // sample i is pixel first + i: contiguous, vectorised
+            for (int k = 0; k < 3; ++k)
+                for (int i = 0; i < n; ++i) sum[k][first + i] = double(clamped[k][i]);
+        } else {
+            for (int i = 0; i < n; ++i)
+                for (int k = 0; k < 3; ++k) sum[k][pixel_of[i]] += double(clamped[k][i]);
+        }
     }
+    // Means to bytes in one loop per channel (vectorised), then into the image.
+    std::uint8_t bytes[3][kTileSize * kTileSize];
+    for (int k = 0; k < 3; ++k)
+        for (int p = 0; p < count; ++p) bytes[k][p] = to_byte(sum[k][p] / double(spp));
     for (int p = 0; p < count; ++p) {
         std::uint8_t* px = image.pixel(pixels[p].x, pixels[p].y);
-        for (int k = 0; k < 3; ++k) px[k] = to_byte(sum[k][p] / double(spp));
+        for (int k = 0; k < 3; ++k) px[k] = bytes[k][p];
     }
 }
 
