@@ -15,10 +15,51 @@ namespace {
 
 inline std::uint8_t to_byte(double v) { return std::uint8_t(std::floor(v + 0.5)); }
 
-// Renders a list of pixels (at most kTileSize^2), spp samples each, a packet
-// of samples at a time in pixel order; each sample is clamped on its own
-// (SPEC section 4) and the pixel is their mean, rounded. A sample that comes
-// out NaN or infinite is counted and contributes black.
+// The clamped colour of each sample (SPEC section 4), lane by lane; a sample
+// that came out NaN or infinite is counted and contributes black.
+template <typename T>
+FH_HOT_INLINE ColorLanes<T> clamp_samples(const ColorLanes<T>& c, const LaneMask<T>& active,
+                                          RayCounts& counts) {
+    const LaneMask<T> ok = finite(c.x) & finite(c.y) & finite(c.z);
+    counts.nonfinite_samples += std::uint64_t(fh::count(active & ~ok));
+    auto clamp = [&ok](const Lanes<T>& v) FH_HOT_LAMBDA {
+        return select(ok, min(max(v, splat(T(0))), splat(T(255))), splat(T(0)));
+    };
+    return {clamp(c.x), clamp(c.y), clamp(c.z)};
+}
+
+// One sample through each pixel's centre, for the pixels [x0, x1) x [y0, y1):
+// a packet is up to W neighbouring pixels of a row, and their colours go
+// straight into the image.
+template <typename T, typename S>
+void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1, int y0, int y1,
+                    Image& image, RayCounts& counts) {
+    constexpr int W = kLanes<T>;
+    Lanes<T> lane;
+    for (int i = 0; i < W; ++i) lane[i] = T(i);
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; x += W) {
+            const int n = std::min(W, x1 - x);
+            // Lanes past the row's end repeat its last pixel, inactive.
+            const Lanes<T> px = min(T(x) + lane, splat(T(x + n - 1))) + T(0.5);
+            const LaneMask<T> active = first_lanes<T>(n);
+            counts.primary += std::uint64_t(n);
+            const ColorLanes<T> c = clamp_samples(
+                shader.trace(camera.generate(px, splat(T(y) + T(0.5))), active, counts), active, counts);
+            alignas(64) T rgb[3][W];
+            store(rgb[0], c.x);
+            store(rgb[1], c.y);
+            store(rgb[2], c.z);
+            std::uint8_t* out = image.pixel(x, y);
+            for (int i = 0; i < n; ++i)
+                for (int k = 0; k < 3; ++k) out[3 * i + k] = to_byte(double(rgb[k][i]));
+        }
+    }
+}
+
+// spp samples in each pixel of a list (at most kTileSize^2 of them; a tile's
+// or the adaptive pass's), a packet of samples at a time in pixel order; the
+// pixel is the mean of its clamped samples, rounded.
 template <typename T, typename S>
 void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef* pixels, int count,
                    int spp, Image& image, RayCounts& counts) {
@@ -47,28 +88,18 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
         }
         const LaneMask<T> active = first_lanes<T>(n);
         counts.primary += std::uint64_t(n);
-        const ColorLanes<T> c = shader.trace(camera.generate(load(sx), load(sy)), active, counts);
-        const LaneMask<T> ok = finite(c.x) & finite(c.y) & finite(c.z);
-        counts.nonfinite_samples += std::uint64_t(fh::count(active & ~ok));
-        alignas(64) T clamped[3][W];
-        const Lanes<T>* channels[3] = {&c.x, &c.y, &c.z};
-        for (int k = 0; k < 3; ++k)
-            store(clamped[k], select(ok, min(max(*channels[k], splat(T(0))), splat(T(255))), splat(T(0))));
-        if (spp == 1) {  // sample i is pixel first + i: contiguous, vectorised
-            for (int k = 0; k < 3; ++k)
-                for (int i = 0; i < n; ++i) sum[k][first + i] = double(clamped[k][i]);
-        } else {
-            for (int i = 0; i < n; ++i)
-                for (int k = 0; k < 3; ++k) sum[k][pixel_of[i]] += double(clamped[k][i]);
-        }
+        const ColorLanes<T> c = clamp_samples(
+            shader.trace(camera.generate(load(sx), load(sy)), active, counts), active, counts);
+        alignas(64) T rgb[3][W];
+        store(rgb[0], c.x);
+        store(rgb[1], c.y);
+        store(rgb[2], c.z);
+        for (int i = 0; i < n; ++i)
+            for (int k = 0; k < 3; ++k) sum[k][pixel_of[i]] += double(rgb[k][i]);
     }
-    // Means to bytes in one loop per channel (vectorised), then into the image.
-    std::uint8_t bytes[3][kTileSize * kTileSize];
-    for (int k = 0; k < 3; ++k)
-        for (int p = 0; p < count; ++p) bytes[k][p] = to_byte(sum[k][p] / double(spp));
     for (int p = 0; p < count; ++p) {
         std::uint8_t* px = image.pixel(pixels[p].x, pixels[p].y);
-        for (int k = 0; k < 3; ++k) px[k] = bytes[k][p];
+        for (int k = 0; k < 3; ++k) px[k] = to_byte(sum[k][p] / double(spp));
     }
 }
 
@@ -107,11 +138,18 @@ FrameResult render_with(const Scene& scene, const Camera& camera, const RenderSe
     with_shader(flat, [&](const auto& shader) {
         const int tiles = ((camera.width + kTileSize - 1) / kTileSize) *
                           ((camera.height + kTileSize - 1) / kTileSize);
+        const int tiles_x = (camera.width + kTileSize - 1) / kTileSize;
         run(tiles, [&](int t, int worker) {
+            RayCounts& c = counts[size_t(worker)].c;
+            if (settings.samples_per_pixel == 1) {
+                const int x0 = (t % tiles_x) * kTileSize, y0 = (t / tiles_x) * kTileSize;
+                render_centres<T>(shader, camera_rays, x0, std::min(x0 + kTileSize, camera.width), y0,
+                                  std::min(y0 + kTileSize, camera.height), result.image, c);
+                return;
+            }
             PixelRef pixels[kChunk];
             const int n = tile_pixels(t, camera.width, camera.height, pixels);
-            render_pixels<T>(shader, camera_rays, pixels, n, settings.samples_per_pixel, result.image,
-                             counts[size_t(worker)].c);
+            render_pixels<T>(shader, camera_rays, pixels, n, settings.samples_per_pixel, result.image, c);
         });
         if (!settings.adaptive) return;
         const std::vector<PixelRef> refine =
