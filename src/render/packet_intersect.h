@@ -8,6 +8,8 @@
 // skipping a shape.
 #pragma once
 
+#include <optional>
+
 #include "render/flat_scene.h"
 
 namespace fh {
@@ -30,12 +32,12 @@ FH_HOT_INLINE PacketHits<T> closest_hits(const FlatScene<T>& scene, const RayPac
     int id = 0;
     for (const Sphere<T>& s : scene.spheres) keep(s.intersect(ray, T(0), h.t), id++);
     for (const Plane<T>& p : scene.planes) keep(p.intersect(ray, T(0), h.t), id++);
-    if (scene.clusters.empty()) return h;
-    const RayBasis<T> basis(ray);
+    std::optional<RayBasis<T>> basis;  // built once a cluster is reached
     for (const TriangleCluster<T>& c : scene.clusters) {
         if (none(c.reaches(ray) & (h.t > T(0)))) continue;
+        if (!basis) basis.emplace(ray);
         for (int k = c.first; k < c.first + c.count; ++k)
-            keep(scene.triangles[size_t(k)].intersect(basis, T(0), h.t), id + k);
+            keep(scene.triangles[size_t(k)].intersect(*basis, T(0), h.t), id + k);
     }
     return h;
 }
@@ -56,12 +58,12 @@ FH_HOT_INLINE LaneMask<T> occluded(const FlatScene<T>& scene, const RayPacket<T>
         if (block(s.intersect(ray, T(0), limit))) return blocked;
     for (const Plane<T>& p : scene.planes)
         if (block(p.intersect(ray, T(0), limit))) return blocked;
-    if (scene.clusters.empty()) return blocked;
-    const RayBasis<T> basis(ray);
+    std::optional<RayBasis<T>> basis;  // built once a cluster is reached
     for (const TriangleCluster<T>& c : scene.clusters) {
         if (none(c.reaches(ray) & (limit > T(0)))) continue;
+        if (!basis) basis.emplace(ray);
         for (int k = c.first; k < c.first + c.count; ++k)
-            if (block(scene.triangles[size_t(k)].intersect(basis, T(0), limit))) return blocked;
+            if (block(scene.triangles[size_t(k)].intersect(*basis, T(0), limit))) return blocked;
     }
     return blocked;
 }

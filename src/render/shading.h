@@ -25,6 +25,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include "core/fast_math.h"
 #include "core/offset.h"
@@ -92,42 +93,54 @@ private:
         LaneInts<T> material;
     };
 
-    // Calls fn(id, lanes) for each distinct id among the lanes in mask, with
-    // the lanes that hold it.
+    // Calls fn(id, lanes, first) for each distinct id among the lanes in
+    // mask, with the lanes that hold it. first is std::true_type for the
+    // first call, whose values may go into every lane, and std::false_type
+    // for the others, which blend theirs in: a packet that sees one
+    // primitive -- most do -- blends nothing.
     template <typename Fn>
     static FH_HOT_INLINE void for_each_distinct(const LaneInts<T>& ids, LaneMask<T> mask, Fn&& fn) {
-        while (any(mask)) {
+        auto next = [&](auto first) FH_HOT_LAMBDA {
             int lane = 0;
             while (mask[lane] == 0) ++lane;
             const LaneMask<T> same = mask & (ids == ids[lane]);
-            fn(int(ids[lane]), same);
+            fn(int(ids[lane]), same, first);
             mask &= ~same;
-        }
+        };
+        if (none(mask)) return;
+        next(std::true_type{});
+        while (any(mask)) next(std::false_type{});
+    }
+
+    // dst = value in the lanes, or everywhere on the first call.
+    template <typename First, typename V>
+    static FH_HOT_INLINE void put(V& dst, const V& value, const LaneMask<T>& lanes, First) {
+        if constexpr (First::value) dst = value;
+        else dst = select(lanes, value, dst);
     }
 
     // Hit points, facing normals, secondary-ray origins, material terms.
+    // Lanes without a hit get some primitive's values, finite, which only
+    // masked steps read -- but no ambient term.
     FH_HOT_INLINE void surfaces(const RayPacket<T>& ray, const PacketHits<T>& h,
                                 const LaneMask<T>& hit, Hits& s) const {
         const Lanes<T> zero = splat(T(0));
-        const Vec3Lanes<T> none3{zero, zero, zero};
-        s.point = s.normal = s.ambient = none3;
-        s.exponent = s.reflectivity = zero;
-        s.glazed = s.whole = s.material = LaneMask<T>{};
         const Vec3Lanes<T> p = ray.at(select(hit, h.t, zero));
-        for_each_distinct(h.prim, hit, [&](int prim, const LaneMask<T>& lanes) FH_HOT_LAMBDA {
+        for_each_distinct(h.prim, hit, [&](int prim, const LaneMask<T>& lanes, auto first) FH_HOT_LAMBDA {
             const PrimitiveSurface<T>& surface = scene_.surfaces[size_t(prim)];
             Vec3Lanes<T> point, normal;
             surface.project(p, point, normal);
-            s.point = select(lanes, point, s.point);
-            s.normal = select(lanes, normal, s.normal);
+            put(s.point, point, lanes, first);
+            put(s.normal, normal, lanes, first);
             const MaterialShading<T>& m = scene_.shading[size_t(surface.material)];
-            s.ambient = select(lanes, m.ambient, s.ambient);
-            s.exponent = select(lanes, splat(m.exponent), s.exponent);
-            s.reflectivity = select(lanes, splat(m.reflectivity), s.reflectivity);
-            s.glazed |= m.glazed ? lanes : LaneMask<T>{};
-            s.whole |= m.whole ? lanes : LaneMask<T>{};
-            s.material = select(lanes, LaneInts<T>{} + surface.material, s.material);
+            put(s.ambient, Vec3Lanes<T>::splat(m.ambient), lanes, first);
+            put(s.exponent, splat(m.exponent), lanes, first);
+            put(s.reflectivity, splat(m.reflectivity), lanes, first);
+            put(s.glazed, m.glazed ? lanes : LaneMask<T>{}, lanes, first);
+            put(s.whole, m.whole ? lanes : LaneMask<T>{}, lanes, first);
+            put(s.material, LaneInts<T>{} + surface.material, lanes, first);
         });
+        s.ambient = select(hit, s.ambient, Vec3Lanes<T>{zero, zero, zero});
         s.normal = FlatScene<T>::facing(s.normal, ray.direction);
         s.origin = offset_origin(s.point, s.normal);
     }
@@ -179,10 +192,10 @@ private:
                     if (lit[i] && !s.whole[i]) power[i] = std::pow(n_dot_h[i], s.exponent[i]);
             specular = select(lit, light.intensity * power, zero);
         }
-        ColorLanes<T> kd{zero, zero, zero}, ks{zero, zero, zero};
-        for_each_distinct(s.material, lit, [&](int m, const LaneMask<T>& lanes) FH_HOT_LAMBDA {
-            kd = select(lanes, terms[m].diffuse, kd);
-            ks = select(lanes, terms[m].specular, ks);
+        ColorLanes<T> kd, ks;  // unlit lanes: some material's, times 0
+        for_each_distinct(s.material, lit, [&](int m, const LaneMask<T>& lanes, auto first) FH_HOT_LAMBDA {
+            put(kd, Vec3Lanes<T>::splat(terms[m].diffuse), lanes, first);
+            put(ks, Vec3Lanes<T>::splat(terms[m].specular), lanes, first);
         });
         local.x += diffuse * kd.x + specular * ks.x;
         local.y += diffuse * kd.y + specular * ks.y;
