@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The movie pipeline against the encoder alone (issue 7, target 3):
-#   1. `make movies`' steps for both movies (render, PNG, stream into ffmpeg),
-#   2. ffmpeg alone encoding the same 600 frames from the PNG files on disk,
+#   1. `make movies` (scripts/make_movies.sh: both movies at once, render,
+#      PNG, stream into ffmpeg),
+#   2. ffmpeg alone, at its defaults (x264 preset medium on every core),
+#      encoding the same 600 frames from the PNG files on disk,
 # and prints both times, their ratio and the peak resident memory of
 # `firsthit frames`, as key: value lines.
 #
@@ -22,9 +24,7 @@ chmod +x "$wrapper"
 
 now() { date +%s.%N; }
 t0=$(now)
-for m in movie1 movie2; do
-  FIRSTHIT=$wrapper "$here/make_movie.sh" "$here/../animations/$m.yaml" "$outdir" >&2
-done
+FIRSTHIT=$wrapper "$here/make_movies.sh" "$outdir" >&2
 t1=$(now)
 for m in movie1 movie2; do
   "$here/encode.sh" "$outdir/$m" "$outdir/.bench-$m.mp4" >&2

@@ -3,17 +3,21 @@
 # fps, +faststart (plays while downloading). The MP4 is written under a
 # temporary name and renamed, so it is whole or absent.
 #
-#   scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N]
+#   scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N] [--threads N]
 #       a folder of frame_0000.png, frame_0001.png, ... (default fps: 30)
-#   scripts/encode.sh --raw WIDTHxHEIGHT OUT.mp4 [--fps N]
+#   scripts/encode.sh --raw WIDTHxHEIGHT OUT.mp4 [--fps N] [--threads N]
 #       raw RGB24 frames on standard input, as `firsthit frames --raw-video -`
 #       writes them while it renders: the encoder then runs beside the
 #       renderer (scripts/make_movie.sh). Same settings, so the same video as
 #       encoding the frame files afterwards.
+#   --threads N: x264's threads (default: ffmpeg's choice, all cores). The
+#       video depends on it: encode with the same N to get the same bytes.
+#       `make movies` uses 1 per movie, with both movies at once: less work
+#       in all than x264 sharing two cores with itself.
 set -euo pipefail
 
 die() { echo "encode.sh: error: $*" >&2; exit 2; }
-usage="usage: scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N]  |  scripts/encode.sh --raw WxH OUT.mp4 [--fps N]"
+usage="usage: scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N] [--threads N]  |  scripts/encode.sh --raw WxH OUT.mp4 [--fps N] [--threads N]"
 
 raw_size=
 if [[ ${1:-} == --raw ]]; then
@@ -30,9 +34,13 @@ else
   shift 2
 fi
 fps=30
+threads=()
 while [[ $# -gt 0 ]]; do
   case $1 in
     --fps) [[ $# -ge 2 ]] || die "--fps needs a value"; fps=$2; shift 2 ;;
+    --threads)
+      [[ $# -ge 2 && $2 =~ ^[1-9][0-9]*$ ]] || die "--threads needs a whole number > 0, got '${2:-}'"
+      threads=(-threads "$2"); shift 2 ;;
     *) die "unknown option '$1'" ;;
   esac
 done
@@ -42,6 +50,7 @@ command -v ffmpeg >/dev/null || die "ffmpeg not found; install it with: apt-get 
 if [[ -n $raw_size ]]; then
   input=(-f rawvideo -pix_fmt rgb24 -s "$raw_size" -framerate "$fps" -i -)
   what="raw frames from standard input"
+  width=${raw_size%x*} height=${raw_size#*x}
 else
   [[ -d $dir ]] || die "no such folder: $dir"
   # The frames must be frame_0..frame_{n-1}, all with the same zero padding.
@@ -55,13 +64,20 @@ else
   done
   input=(-framerate "$fps" -i "$dir/frame_%0${digits}d.png")
   what="$n frames"
+  # The size, from the first frame's IHDR chunk (bytes 16-23, big-endian).
+  read -r width height < <(od -An -tu1 -j16 -N8 "$dir/${frames[0]}" |
+    awk '{print ($1*16777216 + $2*65536 + $3*256 + $4), ($5*16777216 + $6*65536 + $7*256 + $8)}') || true
+  [[ ${width:-0} -gt 0 && ${height:-0} -gt 0 ]] || die "$dir/${frames[0]} is not a PNG file"
 fi
+# H.264 in yuv420p needs even sides: pad odd ones by a pixel. (Only then: the
+# filter costs a copy of every frame.)
+pad=()
+(( width % 2 == 0 && height % 2 == 0 )) || pad=(-vf "pad=ceil(iw/2)*2:ceil(ih/2)*2")
 
 tmp="$(dirname "$out")/.$(basename "$out").tmp-$$.mp4"
 trap 'rm -f "$tmp"' EXIT
-# pad: H.264 in yuv420p needs even sides.
 ffmpeg -hide_banner -loglevel error -nostdin -y "${input[@]}" \
-  -vf "pad=ceil(iw/2)*2:ceil(ih/2)*2" -c:v libx264 -preset medium -pix_fmt yuv420p \
+  "${pad[@]}" -c:v libx264 -preset medium "${threads[@]}" -pix_fmt yuv420p \
   -movflags +faststart "$tmp"
 mv -f "$tmp" "$out"
 trap - EXIT

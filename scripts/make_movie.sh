@@ -1,18 +1,31 @@
 #!/usr/bin/env bash
 # Renders a movie's frames and encodes them: the steps of `make movies`.
 #
-#   scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR]      (default: output/)
+#   scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR] [--threads N] [--quiet]
 # leaves OUTPUT_DIR/NAME/frame_*.png and OUTPUT_DIR/NAME.mp4, NAME the movie
 # file's name without .yaml. FIRSTHIT names the binary (default: build/firsthit).
+#   --threads N   x264's threads (encode.sh --threads); default: all cores
+#   --quiet       no progress line while the frames render
 #
 # The encoder runs while the frames render: firsthit writes each PNG and
 # also streams the frames, in order, as raw RGB24 into ffmpeg (encode.sh
-# --raw), which gives the same MP4 as encoding the PNGs afterwards.
+# --raw), which gives the same MP4 as encoding the PNGs afterwards with the
+# same --threads.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 firsthit=${FIRSTHIT:-$here/../build/firsthit}
-[[ $# -ge 1 ]] || { echo "usage: scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR]" >&2; exit 2; }
-movie=$1 outdir=${2:-$here/../output}
+usage="usage: scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR] [--threads N] [--quiet]"
+positional=() encode_options=() frames_options=()
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --threads) [[ $# -ge 2 ]] || { echo "$usage" >&2; exit 2; }; encode_options+=(--threads "$2"); shift 2 ;;
+    --quiet) frames_options+=(--quiet); shift ;;
+    -*) echo "make_movie.sh: error: unknown option '$1'" >&2; echo "$usage" >&2; exit 2 ;;
+    *) positional+=("$1"); shift ;;
+  esac
+done
+[[ ${#positional[@]} -ge 1 && ${#positional[@]} -le 2 ]] || { echo "$usage" >&2; exit 2; }
+movie=${positional[0]} outdir=${positional[1]:-$here/../output}
 name=$(basename "$movie" .yaml)
 info=$("$firsthit" info "$movie")
 fps=$(sed -n 's/^fps: //p' <<<"$info")
@@ -25,8 +38,8 @@ mkdir -p "$outdir"
 # a render that fails half-way leaves no half movie.
 tmp="$outdir/.$name.mp4.tmp-$$.mp4"
 trap 'rm -f "$tmp"' EXIT
-"$firsthit" frames "$movie" --out "$outdir/$name" --raw-video - \
-  | "$here/encode.sh" --raw "$size" "$tmp" --fps "$fps" >/dev/null
+"$firsthit" frames "$movie" --out "$outdir/$name" --raw-video - "${frames_options[@]}" \
+  | "$here/encode.sh" --raw "$size" "$tmp" --fps "$fps" "${encode_options[@]}" >/dev/null
 mv -f "$tmp" "$outdir/$name.mp4"
 trap - EXIT
 end=$(date +%s.%N)

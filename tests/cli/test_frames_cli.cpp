@@ -163,5 +163,79 @@ TEST(EncodeScript, RefusesEmptyFoldersAndGaps) {
     EXPECT_FALSE(fs::exists(dir / "x.mp4"));
 }
 
+// ffprobe's key=value lines for a video's first stream.
+std::string probe(const fs::path& mp4) {
+    return run_shell("ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+                     "stream=width,height,nb_read_frames -of default=noprint_wrappers=1 " +
+                     mp4.string())
+        .out;
+}
+
+TEST(EncodeScript, OneEncoderThreadStreamedOrFromFilesGivesOneMp4) {
+    const fs::path dir = tiny_movie("encode_threads");
+    const auto made = run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " +
+                                source_path("scripts/make_movie.sh") + " " + (dir / "tiny.yaml").string() +
+                                " " + (dir / "out").string() + " --threads 1 --quiet");
+    ASSERT_EQ(made.status, 0) << made.err;
+    const auto r = run_shell(source_path("scripts/encode.sh") + " " + (dir / "out" / "tiny").string() +
+                             " " + (dir / "files.mp4").string() + " --fps 12 --threads 1");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(slurp(dir / "out" / "tiny.mp4"), slurp(dir / "files.mp4"));
+    const auto bad = run_shell(source_path("scripts/encode.sh") + " " + (dir / "out" / "tiny").string() +
+                               " " + (dir / "x.mp4").string() + " --threads 0");
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_EQ(bad.err, "encode.sh: error: --threads needs a whole number > 0, got '0'\n");
+}
+
+TEST(EncodeScript, OddSidesArePaddedToEvenOnBothPaths) {
+    // H.264 in yuv420p needs even sides: 33 x 17 frames become 34 x 18.
+    const fs::path dir = small_movie("encode_odd", 33, 17, 6, "odd.yaml");
+    const auto made = run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " +
+                                source_path("scripts/make_movie.sh") + " " + (dir / "odd.yaml").string() +
+                                " " + (dir / "out").string() + " --quiet");
+    ASSERT_EQ(made.status, 0) << made.err;
+    const auto r = run_shell(source_path("scripts/encode.sh") + " " + (dir / "out" / "odd").string() +
+                             " " + (dir / "files.mp4").string() + " --fps 6");
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const fs::path& mp4 : {dir / "out" / "odd.mp4", dir / "files.mp4"})
+        EXPECT_EQ(probe(mp4), "width=34\nheight=18\nnb_read_frames=6\n") << mp4;
+    EXPECT_EQ(slurp(dir / "out" / "odd.mp4"), slurp(dir / "files.mp4"));
+}
+
+TEST(MakeMovies, RendersAndEncodesMoviesSideBySide) {
+    // Two small movies at once, as `make movies` does the report's two.
+    const fs::path dir = small_movie("make_movies", 48, 32, 12, "a.yaml");
+    std::ofstream(dir / "b.yaml") << std::regex_replace(slurp(dir / "a.yaml"), std::regex("lights: \\[ambient, spot\\]"),
+                                                        "lights: [ambient, directional]");
+    const auto r = run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " +
+                             source_path("scripts/make_movies.sh") + " " + (dir / "out").string() + " " +
+                             (dir / "a.yaml").string() + " " + (dir / "b.yaml").string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(files_in(dir / "out"), (std::vector<std::string>{"a", "a.mp4", "b", "b.mp4"}));
+    for (const char* name : {"a", "b"}) {
+        EXPECT_EQ(frame_files(dir / "out" / name).size(), 12u);
+        EXPECT_EQ(probe(dir / "out" / (std::string(name) + ".mp4")), "width=48\nheight=32\nnb_read_frames=12\n");
+        // One x264 thread each: the same bytes as encoding the frames so.
+        const auto e = run_shell(source_path("scripts/encode.sh") + " " + (dir / "out" / name).string() + " " +
+                                 (dir / (std::string(name) + "_files.mp4")).string() + " --fps 12 --threads 1");
+        ASSERT_EQ(e.status, 0) << e.err;
+        EXPECT_EQ(slurp(dir / "out" / (std::string(name) + ".mp4")), slurp(dir / (std::string(name) + "_files.mp4")))
+            << name;
+    }
+    EXPECT_NE(slurp(dir / "out" / "a" / "frame_0003.png"), slurp(dir / "out" / "b" / "frame_0003.png"));
+}
+
+TEST(MakeMovies, AFailingMovieFailsTheRunAndLeavesNoMp4) {
+    const fs::path dir = small_movie("make_movies_bad", 32, 32, 6, "good.yaml");
+    std::ofstream(dir / "bad.yaml") << "scene: missing.yaml\ncamera: perspective\n";
+    const auto r = run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " +
+                             source_path("scripts/make_movies.sh") + " " + (dir / "out").string() + " " +
+                             (dir / "good.yaml").string() + " " + (dir / "bad.yaml").string());
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("missing.yaml"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out" / "bad.mp4"));
+    EXPECT_TRUE(fs::exists(dir / "out" / "good.mp4"));  // the other movie is not harmed
+}
+
 }  // namespace
 }  // namespace fh::test
