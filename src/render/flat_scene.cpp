@@ -101,6 +101,8 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
         f.surfaces.push_back({false, Vec3<T>(t.v0), Vec3<T>(t.normal), T(0), t.material});
     }
     f.clusters = clusters_of<T>(kept);
+    for (size_t i = 0; i < f.spheres.size(); ++i) f.everything.spheres.push_back(int(i));
+    for (size_t i = 0; i < f.clusters.size(); ++i) f.everything.clusters.push_back(int(i));
 
     if (!fx.diffuse && !fx.specular) return f;
     // One row of colour products per light, by material.

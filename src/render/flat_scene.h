@@ -12,6 +12,13 @@
 
 namespace fh {
 
+// Indices into FlatScene::spheres and FlatScene::clusters: the ones a packet
+// of rays tests.
+struct PrimitiveSubset {
+    std::vector<int> spheres;
+    std::vector<int> clusters;
+};
+
 // Primitive ids number the spheres, then the planes, then the (kept) triangles.
 inline constexpr int kNoHit = -1;
 
@@ -88,6 +95,7 @@ struct FlatScene {
     std::vector<Plane<T>> planes;
     std::vector<Triangle<T>> triangles;
     std::vector<TriangleCluster<T>> clusters;  // covering the triangles in order
+    PrimitiveSubset everything;                // every sphere and cluster
     std::vector<PrimitiveSurface<T>> surfaces;  // by primitive id
     std::vector<Material<T>> materials;
     std::vector<MaterialShading<T>> shading;    // by material

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "render/flat_scene.h"
+#include "render/tile_culling.h"
 
 namespace fh {
 
@@ -20,24 +21,27 @@ struct PacketHits {
     LaneInts<T> prim;     // its primitive id, or kNoHit
 };
 
+// subset: the spheres and clusters that can be hit (FlatScene::everything,
+// or a tile's: render/tile_culling.h).
 template <typename T>
 FH_HOT_INLINE PacketHits<T> closest_hits(const FlatScene<T>& scene, const RayPacket<T>& ray,
-                                         const LaneMask<T>& active) {
+                                         const LaneMask<T>& active, const PrimitiveSubset& subset) {
     PacketHits<T> h{select(active, splat(kInfinity<T>), splat(T(0))), LaneInts<T>{} + kNoHit};
     auto keep = [&h](const Lanes<T>& t, int id) FH_HOT_LAMBDA {
         const LaneMask<T> nearer = t < h.t;
         h.t = select(nearer, t, h.t);
         h.prim = select(nearer, LaneInts<T>{} + id, h.prim);
     };
-    int id = 0;
-    for (const Sphere<T>& s : scene.spheres) keep(s.intersect(ray, T(0), h.t), id++);
-    for (const Plane<T>& p : scene.planes) keep(p.intersect(ray, T(0), h.t), id++);
+    const int spheres = int(scene.spheres.size()), planes = int(scene.planes.size());
+    for (const int i : subset.spheres) keep(scene.spheres[size_t(i)].intersect(ray, T(0), h.t), i);
+    for (int p = 0; p < planes; ++p) keep(scene.planes[size_t(p)].intersect(ray, T(0), h.t), spheres + p);
     std::optional<RayBasis<T>> basis;  // built once a cluster is reached
-    for (const TriangleCluster<T>& c : scene.clusters) {
+    for (const int i : subset.clusters) {
+        const TriangleCluster<T>& c = scene.clusters[size_t(i)];
         if (none(c.reaches(ray) & (h.t > T(0)))) continue;
         if (!basis) basis.emplace(ray);
         for (int k = c.first; k < c.first + c.count; ++k)
-            keep(scene.triangles[size_t(k)].intersect(*basis, T(0), h.t), id + k);
+            keep(scene.triangles[size_t(k)].intersect(*basis, T(0), h.t), spheres + planes + k);
     }
     return h;
 }
@@ -72,7 +76,7 @@ FH_HOT_INLINE LaneMask<T> occluded(const FlatScene<T>& scene, const RayPacket<T>
 // same code as every other ray.
 template <typename T>
 Hit<T> closest_hit(const FlatScene<T>& scene, const Ray<T>& ray) {
-    const PacketHits<T> h = closest_hits(scene, RayPacket<T>::splat(ray), first_lanes<T>(1));
+    const PacketHits<T> h = closest_hits(scene, RayPacket<T>::splat(ray), first_lanes<T>(1), scene.everything);
     return h.prim[0] == kNoHit ? Hit<T>{} : scene.hit_of(h.t[0], int(h.prim[0]));
 }
 

@@ -8,6 +8,7 @@
 #include "render/adaptive.h"
 #include "render/sampler.h"
 #include "render/shading.h"
+#include "render/tile_culling.h"
 
 namespace fh {
 
@@ -33,7 +34,7 @@ FH_HOT_INLINE ColorLanes<T> clamp_samples(const ColorLanes<T>& c, const LaneMask
 // straight into the image.
 template <typename T, typename S>
 void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1, int y0, int y1,
-                    Image& image, RayCounts& counts) {
+                    const PrimitiveSubset* visible, Image& image, RayCounts& counts) {
     constexpr int W = kLanes<T>;
     Lanes<T> lane;
     for (int i = 0; i < W; ++i) lane[i] = T(i);
@@ -45,7 +46,8 @@ void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1
             const LaneMask<T> active = first_lanes<T>(n);
             counts.primary += std::uint64_t(n);
             const ColorLanes<T> c = clamp_samples(
-                shader.trace(camera.generate(px, splat(T(y) + T(0.5))), active, counts), active, counts);
+                shader.trace(camera.generate(px, splat(T(y) + T(0.5))), active, counts, visible), active,
+                counts);
             alignas(64) T rgb[3][W];
             store(rgb[0], c.x);
             store(rgb[1], c.y);
@@ -59,10 +61,11 @@ void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1
 
 // spp samples in each pixel of a list (at most kTileSize^2 of them; a tile's
 // or the adaptive pass's), a packet of samples at a time in pixel order; the
-// pixel is the mean of its clamped samples, rounded.
+// pixel is the mean of its clamped samples, rounded. visible: what the
+// samples' camera rays can hit (nullptr: anything).
 template <typename T, typename S>
 void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef* pixels, int count,
-                   int spp, Image& image, RayCounts& counts) {
+                   int spp, const PrimitiveSubset* visible, Image& image, RayCounts& counts) {
     constexpr int W = kLanes<T>;
     const StrataGrid grid = strata_for(spp);
     alignas(64) double sum[3][kTileSize * kTileSize];
@@ -89,7 +92,7 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
         const LaneMask<T> active = first_lanes<T>(n);
         counts.primary += std::uint64_t(n);
         const ColorLanes<T> c = clamp_samples(
-            shader.trace(camera.generate(load(sx), load(sy)), active, counts), active, counts);
+            shader.trace(camera.generate(load(sx), load(sy)), active, counts, visible), active, counts);
         alignas(64) T rgb[3][W];
         store(rgb[0], c.x);
         store(rgb[1], c.y);
@@ -129,7 +132,12 @@ FrameResult render_with(const Scene& scene, const Camera& camera, const RenderSe
     struct alignas(64) PaddedCounts {
         RayCounts c;
     };
-    std::vector<PaddedCounts> counts(static_cast<size_t>(pool ? pool->size() : 1));
+    const size_t workers = static_cast<size_t>(pool ? pool->size() : 1);
+    std::vector<PaddedCounts> counts(workers);
+    // Each tile's camera rays hit only what its frustum reaches (computed in
+    // double: render/tile_culling.h); per worker, reused from tile to tile.
+    const CameraRays<double> frustum_rays(camera);
+    std::vector<PrimitiveSubset> subsets(workers);
     auto run = [&](int tasks, const std::function<void(int, int)>& fn) {
         if (pool) pool->parallel_for(tasks, fn);
         else for (int t = 0; t < tasks; ++t) fn(t, 0);
@@ -141,15 +149,18 @@ FrameResult render_with(const Scene& scene, const Camera& camera, const RenderSe
         const int tiles_x = (camera.width + kTileSize - 1) / kTileSize;
         run(tiles, [&](int t, int worker) {
             RayCounts& c = counts[size_t(worker)].c;
+            const int x0 = (t % tiles_x) * kTileSize, y0 = (t / tiles_x) * kTileSize;
+            const int x1 = std::min(x0 + kTileSize, camera.width), y1 = std::min(y0 + kTileSize, camera.height);
+            PrimitiveSubset& visible = subsets[size_t(worker)];
+            cull_to_frustum(flat, TileFrustum(frustum_rays, x0, x1, y0, y1), visible);
             if (settings.samples_per_pixel == 1) {
-                const int x0 = (t % tiles_x) * kTileSize, y0 = (t / tiles_x) * kTileSize;
-                render_centres<T>(shader, camera_rays, x0, std::min(x0 + kTileSize, camera.width), y0,
-                                  std::min(y0 + kTileSize, camera.height), result.image, c);
+                render_centres<T>(shader, camera_rays, x0, x1, y0, y1, &visible, result.image, c);
                 return;
             }
             PixelRef pixels[kChunk];
             const int n = tile_pixels(t, camera.width, camera.height, pixels);
-            render_pixels<T>(shader, camera_rays, pixels, n, settings.samples_per_pixel, result.image, c);
+            render_pixels<T>(shader, camera_rays, pixels, n, settings.samples_per_pixel, &visible,
+                             result.image, c);
         });
         if (!settings.adaptive) return;
         const std::vector<PixelRef> refine =
@@ -159,7 +170,7 @@ FrameResult render_with(const Scene& scene, const Camera& camera, const RenderSe
         run(chunks, [&](int c, int worker) {
             const int n = std::min(kChunk, int(refine.size()) - c * kChunk);
             render_pixels<T>(shader, camera_rays, refine.data() + c * kChunk, n,
-                             settings.adaptive_samples, result.image, counts[size_t(worker)].c);
+                             settings.adaptive_samples, nullptr, result.image, counts[size_t(worker)].c);
         });
     });
     for (const auto& c : counts) result.counts += c.c;

@@ -45,13 +45,17 @@ public:
     explicit Shader(const FlatScene<T>& scene) : scene_(scene) {}
 
     // The colour of each active ray of a packet (unclamped); 0 in the others.
-    ColorLanes<T> trace(RayPacket<T> ray, LaneMask<T> active, RayCounts& counts) const {
+    // first_hits: the primitives the rays' first hits can be on (a tile's
+    // camera rays); nullptr: any.
+    ColorLanes<T> trace(RayPacket<T> ray, LaneMask<T> active, RayCounts& counts,
+                        const PrimitiveSubset* first_hits = nullptr) const {
         const Lanes<T> zero = splat(T(0));
         const ColorLanes<T> black{zero, zero, zero};
         ColorLanes<T> colour = black;
         Lanes<T> weight = splat(T(1));
         for (int depth = 0;; ++depth) {
-            const PacketHits<T> h = closest_hits(scene_, ray, active);
+            const PacketHits<T> h =
+                closest_hits(scene_, ray, active, depth == 0 && first_hits ? *first_hits : scene_.everything);
             const LaneMask<T> hit = h.prim != kNoHit;
             ColorLanes<T> local = select(active & ~hit, background(ray.direction), black);
             if (none(hit)) {
