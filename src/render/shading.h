@@ -63,8 +63,7 @@ public:
                 break;
             }
             Hits hits;
-            surfaces(ray, h, hit, hits);
-            local += hits.ambient;
+            surfaces(ray, h, hit, hits, local);
             add_lights(ray, hits, hit, local, counts);
             colour += weight * local;
             if constexpr (!kReflections) break;
@@ -86,14 +85,14 @@ public:
     }
 
 private:
-    // What each lane's hit looks like: 0 in the lanes without one (an
-    // unlit lane adds its ambient term, a weight its reflectivity).
+    // What each lane's hit looks like, as the lights and the reflection need
+    // it (lanes without a hit: some primitive's values, finite, which only
+    // masked steps read).
     struct Hits {
         Vec3Lanes<T> point, normal;  // normal: unit, facing the ray
         Vec3Lanes<T> origin;         // where secondary rays start
-        ColorLanes<T> ambient;
-        Lanes<T> exponent, reflectivity;
-        LaneMask<T> glazed, whole;
+        Lanes<T> reflectivity;
+        LaneMask<T> glazed;
         LaneInts<T> material;
     };
 
@@ -123,13 +122,13 @@ private:
         else dst = select(lanes, value, dst);
     }
 
-    // Hit points, facing normals, secondary-ray origins, material terms.
-    // Lanes without a hit get some primitive's values, finite, which only
-    // masked steps read -- but no ambient term.
+    // Hit points, facing normals, secondary-ray origins, material terms; the
+    // ambient term goes straight into local (lanes with a hit only).
     FH_HOT_INLINE void surfaces(const RayPacket<T>& ray, const PacketHits<T>& h,
-                                const LaneMask<T>& hit, Hits& s) const {
+                                const LaneMask<T>& hit, Hits& s, ColorLanes<T>& local) const {
         const Lanes<T> zero = splat(T(0));
         const Vec3Lanes<T> p = ray.at(select(hit, h.t, zero));
+        ColorLanes<T> ambient;
         for_each_distinct(h.prim, hit, [&](int prim, const LaneMask<T>& lanes, auto first) FH_HOT_LAMBDA {
             const PrimitiveSurface<T>& surface = scene_.surfaces[size_t(prim)];
             Vec3Lanes<T> point, normal;
@@ -137,14 +136,12 @@ private:
             put(s.point, point, lanes, first);
             put(s.normal, normal, lanes, first);
             const MaterialShading<T>& m = scene_.shading[size_t(surface.material)];
-            put(s.ambient, Vec3Lanes<T>::splat(m.ambient), lanes, first);
-            put(s.exponent, splat(m.exponent), lanes, first);
+            put(ambient, Vec3Lanes<T>::splat(m.ambient), lanes, first);
             put(s.reflectivity, splat(m.reflectivity), lanes, first);
             put(s.glazed, m.glazed ? lanes : LaneMask<T>{}, lanes, first);
-            put(s.whole, m.whole ? lanes : LaneMask<T>{}, lanes, first);
             put(s.material, LaneInts<T>{} + surface.material, lanes, first);
         });
-        s.ambient = select(hit, s.ambient, Vec3Lanes<T>{zero, zero, zero});
+        local += select(hit, ambient, Vec3Lanes<T>{zero, zero, zero});
         s.normal = FlatScene<T>::facing(s.normal, ray.direction);
         s.origin = offset_origin(s.point, s.normal);
     }
@@ -179,6 +176,20 @@ private:
             lit &= ~occluded(scene_, {s.origin, light.to_light}, light.distance, lit);
             if (none(lit)) return;
         }
+        // Per material the lit points show: its colour terms with this light,
+        // its Phong exponent. (Unlit lanes: some material's, masked below.)
+        ColorLanes<T> kd, ks;
+        Lanes<T> exponent;
+        LaneMask<T> whole;
+        for_each_distinct(s.material, lit, [&](int m, const LaneMask<T>& lanes, auto first) FH_HOT_LAMBDA {
+            put(kd, Vec3Lanes<T>::splat(terms[m].diffuse), lanes, first);
+            put(ks, Vec3Lanes<T>::splat(terms[m].specular), lanes, first);
+            if constexpr (kSpecularTerm) {
+                const MaterialShading<T>& material = scene_.shading[size_t(m)];
+                put(exponent, splat(material.exponent), lanes, first);
+                put(whole, material.whole ? lanes : LaneMask<T>{}, lanes, first);
+            }
+        });
         // A select, not a product with 0: an unlit lane may hold NaN.
         const Lanes<T> diffuse = select(lit, light.intensity * n_dot_l, zero);
         Lanes<T> specular = zero;
@@ -188,19 +199,14 @@ private:
             const Lanes<T> n_dot_h = max(zero, dot(s.normal, h));
             // Square-and-multiply, one step per bit of the scene's largest
             // exponent (7 for the report's 100).
-            Lanes<T> power = splat(T(1)), exponent = s.exponent;
+            Lanes<T> power = splat(T(1)), left = exponent;
             for (int bit = scene_.exponent_bits - 1; bit >= 0; --bit)
-                pow_whole_step(power, n_dot_h, exponent, bit);
+                pow_whole_step(power, n_dot_h, left, bit);
             if (scene_.fractional_exponents)  // rare: std::pow where needed
                 for (int i = 0; i < kLanes<T>; ++i)
-                    if (lit[i] && !s.whole[i]) power[i] = std::pow(n_dot_h[i], s.exponent[i]);
+                    if (lit[i] && !whole[i]) power[i] = std::pow(n_dot_h[i], exponent[i]);
             specular = select(lit, light.intensity * power, zero);
         }
-        ColorLanes<T> kd, ks;  // unlit lanes: some material's, times 0
-        for_each_distinct(s.material, lit, [&](int m, const LaneMask<T>& lanes, auto first) FH_HOT_LAMBDA {
-            put(kd, Vec3Lanes<T>::splat(terms[m].diffuse), lanes, first);
-            put(ks, Vec3Lanes<T>::splat(terms[m].specular), lanes, first);
-        });
         local.x += diffuse * kd.x + specular * ks.x;
         local.y += diffuse * kd.y + specular * ks.y;
         local.z += diffuse * kd.z + specular * ks.z;
