@@ -20,7 +20,8 @@ if [[ $# -ge 2 ]]; then movies=("${@:2}"); fi
 # Each movie in a process group of its own (job control), so Ctrl-C and
 # TERM can stop a whole pipeline, renderer and encoder.
 set -m
-pids=()
+pids=() logs=()
+trap 'rm -f "${logs[@]}"' EXIT
 stop() {
   for pid in "${pids[@]}"; do kill -TERM -- "-$pid" 2>/dev/null || true; done
   wait || true
@@ -29,20 +30,22 @@ stop() {
 }
 trap stop INT TERM
 for m in "${movies[@]}"; do
-  "$here/make_movie.sh" "$m" "$outdir" --threads 1 --quiet &
+  logs+=("$(mktemp)")  # what each movie says, shown once the progress line is gone
+  "$here/make_movie.sh" "$m" "$outdir" --threads 1 --quiet >"${logs[-1]}" 2>&1 &
   pids+=($!)
 done
 
 if [[ -t 2 ]]; then
   totals=()
-  for m in "${movies[@]}"; do totals+=("$("$firsthit" info "$m" | sed -n 's/^frames: //p')"); done
+  for m in "${movies[@]}"; do totals+=("$("$firsthit" info "$m" 2>/dev/null | sed -n 's/^frames: //p' || true)"); done
   running() { for pid in "${pids[@]}"; do kill -0 "$pid" 2>/dev/null && return 0; done; return 1; }
+  shopt -s nullglob  # counting frames with a glob: no process started per poll
   while running; do
     line=""
     for i in "${!movies[@]}"; do
       name=$(basename "${movies[$i]}" .yaml)
-      done_frames=$(find "$outdir/$name" -maxdepth 1 -name 'frame_*.png' 2>/dev/null | wc -l)
-      line+="$name ${done_frames}/${totals[$i]}   "
+      frames=("$outdir/$name"/frame_*.png)
+      line+="$name ${#frames[@]}/${totals[$i]:-?}   "
     done
     printf '\rmake_movies.sh: %s' "$line" >&2
     sleep 1
@@ -51,5 +54,12 @@ if [[ -t 2 ]]; then
 fi
 
 status=0
-for pid in "${pids[@]}"; do wait "$pid" || status=$?; done
+for i in "${!pids[@]}"; do
+  if wait "${pids[$i]}"; then
+    cat "${logs[$i]}"
+  else
+    status=$?
+    cat "${logs[$i]}" >&2  # a failed movie's messages are errors
+  fi
+done
 exit "$status"
