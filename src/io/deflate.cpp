@@ -64,24 +64,29 @@ constexpr int kTokenValues = 256 + kMaxMatch + 1;
 
 // Literals and matches: each run of one byte value of length r >= 4 becomes
 // the byte and matches of r - 1 bytes at distance 1 (at most 258 each).
-// Counts each symbol in freq. tokens: reused storage.
-void tokenize(std::span<const std::uint8_t> data, std::uint32_t* freq, std::vector<Token>& tokens) {
-    tokens.resize(data.size() + 1);  // at most one per byte
+// Counts each symbol in freq. tokens: reused storage, at least as long as
+// data + 1; returns how many tokens it holds.
+size_t tokenize(std::span<const std::uint8_t> data, std::uint32_t* freq, std::vector<Token>& tokens) {
+    if (tokens.size() < data.size() + 1) tokens.resize(data.size() + 1);  // never shrunk: no re-zeroing
     Token* out = tokens.data();
+    // Literals are counted in four tables, by position: a run of one value
+    // would otherwise wait on its own increments.
+    std::uint32_t literals[4][256] = {};
     const std::uint8_t* p = data.data();
     const size_t n = data.size();
     for (size_t i = 0; i < n;) {
         const std::uint8_t b = p[i];
+        const std::uint64_t repeated = 0x0101010101010101ull * b;
         // Most bytes start no run of 4: a literal, without the run search.
-        if (i + 4 > n || p[i + 1] != b || p[i + 2] != b || p[i + 3] != b) {
+        std::uint32_t next4;
+        if (i + 4 > n || (std::memcpy(&next4, p + i, 4), next4 != std::uint32_t(repeated))) {
             *out++ = b;
-            ++freq[b];
+            ++literals[i & 3][b];
             ++i;
             continue;
         }
         // The run's end: 8 bytes at a time while they all equal b, then the
         // first that differs (little-endian: the lowest differing byte).
-        const std::uint64_t repeated = 0x0101010101010101ull * b;
         size_t j = i + 4;
         for (;;) {
             if (j + 8 > n) {
@@ -98,7 +103,7 @@ void tokenize(std::span<const std::uint8_t> data, std::uint32_t* freq, std::vect
         }
         size_t run = j - i;
         *out++ = b;
-        ++freq[b];
+        ++literals[0][b];
         for (--run; run >= 3;) {
             const size_t m = std::min<size_t>(run, kMaxMatch);
             *out++ = Token(256 + m);
@@ -107,11 +112,13 @@ void tokenize(std::span<const std::uint8_t> data, std::uint32_t* freq, std::vect
         }
         for (; run > 0; --run) {
             *out++ = b;
-            ++freq[b];
+            ++literals[0][b];
         }
         i = j;
     }
-    tokens.resize(size_t(out - tokens.data()));
+    for (int v = 0; v < 256; ++v)
+        freq[v] += literals[0][v] + literals[1][v] + literals[2][v] + literals[3][v];
+    return size_t(out - tokens.data());
 }
 
 // Packs bits from the least significant end, as deflate stores them, into
@@ -124,9 +131,9 @@ public:
         buffer_ |= bits << pending_;
         pending_ += count;
         std::memcpy(out_, &buffer_, 8);  // little-endian: the low bytes first
-        const int done = pending_ >> 3;
+        const int done = pending_ >> 3;  // at most 4: pending_ < 8 + 32 here
         out_ += done;
-        buffer_ = done == 8 ? 0 : buffer_ >> (8 * done);
+        buffer_ >>= 8 * done;
         pending_ &= 7;
     }
     std::uint8_t* finish() { return out_ + (pending_ + 7) / 8; }  // the last byte, padded
@@ -170,10 +177,10 @@ std::vector<LengthSymbol> encode_lengths(const std::vector<std::uint8_t>& length
 
 }  // namespace
 
-std::vector<std::uint8_t> zlib_compress_runs(std::span<const std::uint8_t> data) {
-    thread_local std::vector<Token> tokens;  // reused: no fresh pages per frame
+void zlib_compress_runs(std::span<const std::uint8_t> data, std::vector<std::uint8_t>& out) {
+    thread_local std::vector<Token> token_storage;  // reused: no fresh pages per frame
     std::array<std::uint32_t, kLiteralLengthSymbols> freq{};
-    tokenize(data, freq.data(), tokens);
+    const std::span<const Token> tokens(token_storage.data(), tokenize(data, freq.data(), token_storage));
     freq[kEndOfBlock] = 1;
     const std::vector<std::uint8_t> lit_lengths = huffman_lengths(freq, 15);
     const std::vector<std::uint16_t> lit_codes = canonical_codes(lit_lengths);
@@ -218,10 +225,11 @@ std::vector<std::uint8_t> zlib_compress_runs(std::span<const std::uint8_t> data)
         if (m == 3 || kLengthCodes[size_t(m)].symbol != kLengthCodes[size_t(m) - 1].symbol)
             total_bits += size_t(freq[kLengthCodes[size_t(m)].symbol]) * emit[size_t(256 + m)].count;
 
-    std::vector<std::uint8_t> out(2 + (total_bits + 7) / 8 + 4 + 8);
-    out[0] = 0x78;  // deflate, 32K window
-    out[1] = 0x01;  // no dictionary, "fastest" level; (0x78 << 8 | 0x01) % 31 == 0
-    BitWriter bits(out.data() + 2);
+    const size_t start = out.size();
+    out.resize(start + 2 + (total_bits + 7) / 8 + 4 + 8);
+    out[start] = 0x78;      // deflate, 32K window
+    out[start + 1] = 0x01;  // no dictionary, "fastest" level; (0x78 << 8 | 0x01) % 31 == 0
+    BitWriter bits(out.data() + start + 2);
     bits.put(1, 1);  // the final block
     bits.put(2, 2);  // dynamic Huffman codes
     bits.put(std::uint32_t(hlit - 257), 5);
@@ -238,7 +246,6 @@ std::vector<std::uint8_t> zlib_compress_runs(std::span<const std::uint8_t> data)
     const std::uint32_t check = adler32(data);
     for (int shift = 24; shift >= 0; shift -= 8) *end++ = std::uint8_t(check >> shift);
     out.resize(size_t(end - out.data()));
-    return out;
 }
 
 }  // namespace fh

@@ -12,7 +12,8 @@
 
 namespace fh {
 
-std::vector<std::uint8_t> zlib_compress_runs(std::span<const std::uint8_t> data);
+// Appends the stream to out.
+void zlib_compress_runs(std::span<const std::uint8_t> data, std::vector<std::uint8_t>& out);
 
 // Adler-32 (RFC 1950) of data.
 std::uint32_t adler32(std::span<const std::uint8_t> data);

@@ -56,16 +56,21 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
         for (size_t i = 0; i < std::min<size_t>(3, stride); ++i) out[1 + i] = in[i];
         for (size_t i = 3; i < stride; ++i) out[1 + i] = std::uint8_t(in[i] - in[i - 3]);
     }
-    const std::vector<std::uint8_t> compressed = zlib_compress_runs(rows);
-
     std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};  // the signature
-    png.reserve(compressed.size() + 64);
+    png.reserve(rows.size() / 4);
     std::vector<std::uint8_t> header;
     put_u32(header, std::uint32_t(image.width));
     put_u32(header, std::uint32_t(image.height));
     header.insert(header.end(), {8, 2, 0, 0, 0});  // 8 bits, RGB, deflate, adaptive filters, no interlace
     put_chunk(png, "IHDR", header);
-    put_chunk(png, "IDAT", compressed);
+    // IDAT, compressed in place: length (filled in after), type, stream, CRC.
+    const size_t length_at = png.size();
+    put_u32(png, 0);
+    png.insert(png.end(), {'I', 'D', 'A', 'T'});
+    zlib_compress_runs(rows, png);
+    const std::uint32_t length = std::uint32_t(png.size() - length_at - 8);
+    for (int k = 0; k < 4; ++k) png[length_at + size_t(k)] = std::uint8_t(length >> (24 - 8 * k));
+    put_u32(png, std::uint32_t(crc32(0, png.data() + length_at + 4, uInt(length + 4))));
     put_chunk(png, "IEND", std::span<const std::uint8_t>());
     return png;
 }

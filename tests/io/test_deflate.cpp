@@ -87,6 +87,12 @@ TEST(Deflate, Adler32MatchesZlib) {
     }
 }
 
+std::vector<std::uint8_t> compress(std::span<const std::uint8_t> data) {
+    std::vector<std::uint8_t> out;
+    zlib_compress_runs(data, out);
+    return out;
+}
+
 std::vector<std::uint8_t> inflate_all(const std::vector<std::uint8_t>& stream, size_t expected_size) {
     std::vector<std::uint8_t> out(expected_size + 16);
     uLongf size = uLongf(out.size());
@@ -106,22 +112,27 @@ TEST(Deflate, ZlibInflatesRunsOfEveryLengthBack) {
         data.push_back(std::uint8_t(value * 7 + 1));
         value = (value + 37) % 256;
     }
-    EXPECT_EQ(inflate_all(zlib_compress_runs(data), data.size()), data);
+    EXPECT_EQ(inflate_all(compress(data), data.size()), data);
 }
 
 TEST(Deflate, ZlibInflatesNoiseEmptyAndConstantInputsBack) {
     std::mt19937 rng(5);
     std::vector<std::uint8_t> noise(200'000);
     for (auto& b : noise) b = std::uint8_t(rng());
-    EXPECT_EQ(inflate_all(zlib_compress_runs(noise), noise.size()), noise);
+    EXPECT_EQ(inflate_all(compress(noise), noise.size()), noise);
     const std::vector<std::uint8_t> empty;
-    EXPECT_EQ(inflate_all(zlib_compress_runs(empty), 0), empty);
+    EXPECT_EQ(inflate_all(compress(empty), 0), empty);
     const std::vector<std::uint8_t> zeros(1'000'000, 0);
-    const auto packed = zlib_compress_runs(zeros);
+    const auto packed = compress(zeros);
     EXPECT_LT(packed.size(), 1000u);  // runs of 258 in a couple of bits each
     EXPECT_EQ(inflate_all(packed, zeros.size()), zeros);
     const std::vector<std::uint8_t> one = {42};
-    EXPECT_EQ(inflate_all(zlib_compress_runs(one), 1), one);
+    EXPECT_EQ(inflate_all(compress(one), 1), one);
+    // The stream is appended: what was there stays.
+    std::vector<std::uint8_t> out = {1, 2, 3};
+    zlib_compress_runs(one, out);
+    EXPECT_EQ(std::vector<std::uint8_t>(out.begin(), out.begin() + 3), (std::vector<std::uint8_t>{1, 2, 3}));
+    EXPECT_EQ(inflate_all(std::vector<std::uint8_t>(out.begin() + 3, out.end()), 1), one);
 }
 
 // Whole PNG files through stb_image's decoder (its own inflate).
