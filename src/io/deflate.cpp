@@ -64,8 +64,8 @@ constexpr int kTokenValues = 256 + kMaxMatch + 1;
 
 // Literals and matches: each run of one byte value of length r >= 4 becomes
 // the byte and matches of r - 1 bytes at distance 1 (at most 258 each).
-// Counts each symbol in freq. tokens: reused storage, at least as long as
-// data + 1; returns how many tokens it holds.
+// Counts each symbol in freq. The tokens go into `tokens` (reused storage,
+// grown to data.size() + 1 when shorter); returns how many there are.
 size_t tokenize(std::span<const std::uint8_t> data, std::uint32_t* freq, std::vector<Token>& tokens) {
     if (tokens.size() < data.size() + 1) tokens.resize(data.size() + 1);  // never shrunk: no re-zeroing
     Token* out = tokens.data();
@@ -180,7 +180,8 @@ std::vector<LengthSymbol> encode_lengths(const std::vector<std::uint8_t>& length
 void zlib_compress_runs(std::span<const std::uint8_t> data, std::vector<std::uint8_t>& out) {
     thread_local std::vector<Token> token_storage;  // reused: no fresh pages per frame
     std::array<std::uint32_t, kLiteralLengthSymbols> freq{};
-    const std::span<const Token> tokens(token_storage.data(), tokenize(data, freq.data(), token_storage));
+    const size_t token_count = tokenize(data, freq.data(), token_storage);  // may grow the storage
+    const std::span<const Token> tokens(token_storage.data(), token_count);
     freq[kEndOfBlock] = 1;
     const std::vector<std::uint8_t> lit_lengths = huffman_lengths(freq, 15);
     const std::vector<std::uint16_t> lit_codes = canonical_codes(lit_lengths);

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <stdexcept>
 
 #include <sys/types.h>
@@ -41,11 +42,17 @@ static unsigned char* fh_png_deflate(unsigned char* data, int data_len, int* out
 #pragma GCC diagnostic pop
 #endif
 
-// stb frees the result with free(), so it is allocated with malloc().
+// stb frees the result with free(), so it is allocated with malloc(). No
+// exception may cross stb's C code (it would leak stb's buffers): running out
+// of memory is a null result, which stb reports as a failure.
 static unsigned char* fh_png_deflate(unsigned char* data, int data_len, int* out_len, int) {
     thread_local std::vector<std::uint8_t> stream;  // reused: no fresh pages per frame
     stream.clear();
-    fh::zlib_compress_runs(std::span<const std::uint8_t>(data, size_t(data_len)), stream);
+    try {
+        fh::zlib_compress_runs(std::span<const std::uint8_t>(data, size_t(data_len)), stream);
+    } catch (const std::bad_alloc&) {
+        return nullptr;
+    }
     auto* out = static_cast<unsigned char*>(std::malloc(stream.size()));
     if (!out) return nullptr;
     std::memcpy(out, stream.data(), stream.size());
@@ -69,7 +76,8 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
     };
     if (!stbi_write_png_to_func(append, &out, image.width, image.height, 3, image.rgb.data(),
                                 image.width * 3))
-        throw std::runtime_error("PNG encoding failed");
+        throw std::runtime_error("PNG encoding failed: out of memory for a " + std::to_string(image.width) +
+                                 "x" + std::to_string(image.height) + " image");
     return out;
 }
 

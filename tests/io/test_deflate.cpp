@@ -103,8 +103,8 @@ std::vector<std::uint8_t> inflate_all(const std::vector<std::uint8_t>& stream, s
 }
 
 TEST(Deflate, ZlibInflatesRunsOfEveryLengthBack) {
-    // Runs around the match limits (3, 4, 258, 259, 260, 3 * 258 + ...), of
-    // every byte value, between literals.
+    // Runs around the match limits (3, 4, 258 and one or two more, 2 * 258
+    // and around, longer ones), of many byte values, between literals.
     std::vector<std::uint8_t> data;
     int value = 0;
     for (const int run : {1, 2, 3, 4, 5, 10, 11, 257, 258, 259, 260, 261, 262, 516, 517, 518, 1000, 4096}) {
