@@ -20,7 +20,7 @@ const Scene& report_scene() {
     return s;
 }
 
-constexpr int kTile = 16;  // rays per benchmark batch: one 16 x 16 tile
+constexpr int kTile = 16;  // the benchmarks' rays: one 16 x 16 tile, 256 of them
 
 // A tile of the perspective view's camera rays, 16 x 16 pixels with its
 // corner at (x0, y0), as packets.
@@ -62,7 +62,7 @@ std::vector<RayPacket<T>> rays_toward(const dvec3& target, double spread) {
     return out;
 }
 
-template <typename T, typename Shape, typename Intersect>
+template <typename T, typename Intersect>
 void intersect_packets(benchmark::State& state, const std::vector<RayPacket<T>>& rays,
                        Intersect intersect) {
     for (auto _ : state)
@@ -76,7 +76,7 @@ void BM_Sphere(benchmark::State& state) {
     const Sphere<T> s{{-3, 0, 0}, 1, 0};
     const bool hit = state.range(0) != 0;
     const auto rays = rays_toward<T>(hit ? dvec3(-3, 0, 0) : dvec3(3, 0, 0), 1.2);
-    intersect_packets<T, Sphere<T>>(state, rays, [&](const RayPacket<T>& p) {
+    intersect_packets<T>(state, rays, [&](const RayPacket<T>& p) {
         return s.intersect(p, T(0), splat(kInfinity<T>));
     });
 }
@@ -85,7 +85,7 @@ template <typename T>
 void BM_Plane(benchmark::State& state) {
     const Plane<T> floor{{0, 0, 1}, -1, 0};
     const auto rays = rays_toward<T>(dvec3(0, 0, -1), 10);
-    intersect_packets<T, Plane<T>>(state, rays, [&](const RayPacket<T>& p) {
+    intersect_packets<T>(state, rays, [&](const RayPacket<T>& p) {
         return floor.intersect(p, T(0), splat(kInfinity<T>));
     });
 }
@@ -97,7 +97,7 @@ void BM_Triangle(benchmark::State& state) {
     const auto tri = Triangle<T>::make({-5, 5, 0}, {-7, 5, 0}, {-6, 7, 0}, 0);
     const bool hit = state.range(0) != 0;
     const auto rays = rays_toward<T>(hit ? dvec3(-6, 5.8, 0) : dvec3(6, 5.8, 0), 0.8);
-    intersect_packets<T, Triangle<T>>(state, rays, [&](const RayPacket<T>& p) {
+    intersect_packets<T>(state, rays, [&](const RayPacket<T>& p) {
         return tri.intersect(RayBasis<T>(p), T(0), splat(kInfinity<T>));
     });
 }

@@ -8,7 +8,6 @@
 // which is what makes the triangle test watertight.
 #pragma once
 
-#include <cmath>
 #include <type_traits>
 
 #include "core/simd.h"
@@ -72,10 +71,9 @@ FH_HOT_INLINE V product_error(V a, V b, V p) {
 // share an edge classify a ray against it consistently, which is what makes
 // the triangle test watertight.
 //
-// Written without a select: with one the compiler moves each side into a
-// branch of its own, and the batch loops stop vectorising (it may not
-// speculate floating-point operations). The products a and b have other uses
-// than the subtraction, so the compiler does not fuse them into it.
+// Written without a select, as straight-line arithmetic that is the same on
+// one value and on a packet. The products a and b have other uses than the
+// subtraction, so the compiler does not fuse them into it.
 template <typename V>
 FH_HOT_INLINE V orientation(V px, V py, V qx, V qy) {
     const V a = px * qy;

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <iterator>
-#include <cmath>
 
 #include "core/simd.h"
 
@@ -70,10 +69,11 @@ FH_HOT_INLINE V acos_fast(V x) {
     return select(x < T(0), kPi - acos_a, acos_a);
 }
 
-// x^n for a whole n in [0, kWholePowerLimit], given as a T, by square-and-
-// multiply over n's bits from the top: a fixed sequence of selects, no loop
-// on n. The report's Phong exponents are whole; this is several times
-// cheaper than std::pow and vectorises.
+// x^n for a whole n in [0, kWholePowerLimit], given per lane as a T, by
+// square-and-multiply over n's bits from the top: a fixed sequence of selects,
+// no branch on n, so each lane may have its own n. The report's Phong
+// exponents are whole; this is several times cheaper than std::pow. The
+// shader runs one step per bit of the scene's largest exponent.
 inline constexpr int kWholePowerLimit = 4095;  // 12 bits
 
 // One step: r^2, times x if n >= 2^bit (then n -= 2^bit). Start from r = 1 at
@@ -86,14 +86,6 @@ FH_HOT_INLINE void pow_whole_step(V& r, V x, V& n, int bit) {
     r *= r;
     r = select(set, r * x, r);
     n = select(set, n - b, n);
-}
-
-template <typename V>
-FH_HOT_INLINE V pow_whole(V x, V n) {
-    V r = broadcast<V>(1);
-#pragma GCC unroll 16
-    for (int bit = 11; bit >= 0; --bit) pow_whole_step(r, x, n, bit);
-    return r;
 }
 
 }  // namespace fh

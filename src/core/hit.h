@@ -9,7 +9,7 @@ namespace fh {
 
 enum class ShapeKind : std::uint8_t { none, sphere, plane, triangle };
 
-// What the intersection loop keeps: cheap to update in the hot loop.
+// The nearest hit of one ray (tests, the viewer): which primitive, how far.
 template <typename T>
 struct Hit {
     T t = kInfinity<T>;
@@ -22,7 +22,7 @@ struct Hit {
 // What shading needs, computed once for the nearest hit only.
 template <typename T>
 struct SurfacePoint {
-    Vec3<T> point;   // projected back onto the surface (see each shape's point_at)
+    Vec3<T> point;   // projected back onto the surface (PrimitiveSurface::project)
     Vec3<T> normal;  // unit, facing the incoming ray (report 8.4)
     int material = -1;
 };

@@ -109,11 +109,6 @@ FH_HOT_INLINE Vec3Lanes<T> select(const LaneMask<T>& m, const Vec3Lanes<T>& a,
 }
 
 template <typename T>
-FH_HOT_INLINE Vec3Lanes<T> select(const LaneMask<T>& m, const Vec3<T>& a, const Vec3Lanes<T>& b) {
-    return select(m, Vec3Lanes<T>::splat(a), b);
-}
-
-template <typename T>
 using ColorLanes = Vec3Lanes<T>;
 
 template <typename T>

@@ -5,8 +5,8 @@
 // These are GCC/Clang vector extensions, not intrinsics: +, -, *, / and the
 // comparisons work lane by lane, a comparison gives a LaneMask<T> (all bits
 // set where true), and `m ? a : b` selects per lane. The compiler emits the
-// widest instructions the target has, and plain SSE2 code without AVX, so
-// the vectorisation no longer depends on the auto-vectoriser's heuristics.
+// widest instructions the target has, and plain SSE2 code without AVX: the
+// code is vectorised as written, not by the auto-vectoriser's judgement.
 //
 // Each helper has a scalar overload with the same meaning, so formulas
 // written over "V" (T or Lanes<T>) read the same either way.
@@ -38,6 +38,8 @@ inline constexpr int kSimdBytes = 32;
 #else
 inline constexpr int kSimdBytes = 16;
 #endif
+static_assert(kSimdBytes == 16 || kSimdBytes == 32 || kSimdBytes == 64,
+              "FIRSTHIT_SIMD_BYTES: 16, 32 or 64 (a vector the target has)");
 
 template <typename T>
 inline constexpr int kLanes = kSimdBytes / int(sizeof(T));

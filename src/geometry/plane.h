@@ -44,13 +44,6 @@ struct Plane {
     T intersect(const Ray<T>& ray, T t_min, T t_max) const {
         return intersect(RayPacket<T>::splat(ray), t_min, splat(t_max))[0];
     }
-
-    Vec3<T> normal_at(const Vec3<T>&) const { return normal; }
-
-    Vec3<T> point_at(const Ray<T>& ray, T t) const {
-        const Vec3<T> p = ray.at(t);
-        return p - (glm::dot(normal, p) - distance) * normal;
-    }
 };
 
 }  // namespace fh

@@ -21,8 +21,6 @@
 // with that ray in every lane, so tests of one ray test the tracer's code.
 #pragma once
 
-#include <algorithm>
-#include <cmath>
 #include <limits>
 
 #include "core/exact.h"
@@ -67,14 +65,6 @@ struct Sphere {
     // One ray: the packet formula with that ray in every lane.
     T intersect(const Ray<T>& ray, T t_min, T t_max) const {
         return intersect(RayPacket<T>::splat(ray), t_min, splat(t_max))[0];
-    }
-
-    Vec3<T> normal_at(const Vec3<T>& p) const { return glm::normalize(p - center); }
-
-    // The hit point projected back onto the sphere, so its error is a few ulps
-    // of its own coordinates rather than of the ray's travel.
-    Vec3<T> point_at(const Ray<T>& ray, T t) const {
-        return center + radius * normal_at(ray.at(t));
     }
 
 private:

@@ -6,9 +6,9 @@
 //
 //  1. The vertices are taken relative to the ray's origin and projected along
 //     the ray onto a plane across it (two unit vectors perpendicular to d;
-//     the paper shears instead, which needs the ray's dominant axis and, in
-//     a loop vectorised over rays, selects that cost more than the basis). A
-//     shared vertex gets the same projected point in every triangle.
+//     the paper shears instead, which needs the ray's dominant axis: on a
+//     packet, per-lane selects that cost more than the basis). A shared
+//     vertex gets the same projected point in every triangle.
 //  2. Edge functions U, V, W are the 2x2 determinants of consecutive projected
 //     vertices, compensated by the products' exact rounding errors
 //     (core/exact.h): their sign is never wrong, and a shared edge gets
@@ -44,7 +44,7 @@ namespace fh {
 // JCGT 2017), well conditioned for every direction.
 template <typename T>
 struct RayBasis {
-    const RayPacket<T>& ray;
+    const RayPacket<T>& ray;  // built and used within one pass over a packet: never outlives it
     Vec3Lanes<T> e, g;
 
     explicit FH_HOT_INLINE RayBasis(const RayPacket<T>& r) : ray(r) {
@@ -121,15 +121,6 @@ struct Triangle {
     T intersect(const Ray<T>& ray, T t_min, T t_max) const {
         const RayPacket<T> packet = RayPacket<T>::splat(ray);
         return intersect(RayBasis<T>(packet), t_min, splat(t_max))[0];
-    }
-
-    Vec3<T> normal_at(const Vec3<T>&) const { return normal; }
-
-    // Project onto the triangle's plane, so the error is relative to the
-    // vertices' coordinates and not to the ray's travel.
-    Vec3<T> point_at(const Ray<T>& ray, T t) const {
-        const Vec3<T> p = ray.at(t);
-        return p - glm::dot(normal, p - v0) * normal;
     }
 };
 

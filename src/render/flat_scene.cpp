@@ -8,13 +8,6 @@ namespace fh {
 namespace {
 
 template <typename T>
-Material<T> cast(const Material<double>& m) {
-    return {Color<T>(m.ambient_color), Color<T>(m.diffuse_color), Color<T>(m.specular_color),
-            T(m.ambient), T(m.diffuse), T(m.specular), T(m.phong_exponent),
-            whole_exponent(m.phong_exponent), m.glazed, T(m.reflectivity)};
-}
-
-template <typename T>
 LightTerms<T> terms(const Material<double>& m, const dvec3& light_color, double intensity,
                     const Effects& fx) {
     LightTerms<T> t;
@@ -73,23 +66,22 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
         }
     }
     for (size_t m = 0; m < scene.materials.size(); ++m) {
-        const Material<T> mat = cast<T>(scene.materials[m]);
-        f.materials.push_back(mat);
-        f.shading.push_back({Color<T>(ambient[m]), mat.glazed, mat.reflectivity,
-                             mat.phong_exponent, mat.phong_whole >= 0});
-        f.fractional_exponents |= mat.phong_whole < 0 && fx.specular;
-        if (mat.phong_whole > 0)
-            f.exponent_bits = std::max(f.exponent_bits, int(std::bit_width(unsigned(mat.phong_whole))));
+        const Material<double>& mat = scene.materials[m];
+        const int whole = whole_exponent(mat.phong_exponent);
+        f.shading.push_back({Color<T>(ambient[m]), mat.glazed, T(mat.reflectivity), T(mat.phong_exponent),
+                             whole >= 0});
+        f.fractional_exponents |= whole < 0 && fx.specular;
+        if (whole > 0) f.exponent_bits = std::max(f.exponent_bits, int(std::bit_width(unsigned(whole))));
     }
 
     // Shapes and their surfaces, in primitive id order.
     for (const auto& s : scene.spheres) {
         f.spheres.push_back({Vec3<T>(s.center), T(s.radius), s.material});
-        f.surfaces.push_back({true, Vec3<T>(s.center), Vec3<T>(0), T(s.radius), s.material});
+        f.surfaces.push_back(surface_of(f.spheres.back()));
     }
     for (const auto& p : scene.planes) {
         f.planes.push_back({Vec3<T>(p.normal), T(p.distance), p.material});
-        f.surfaces.push_back({false, Vec3<T>(p.distance * p.normal), Vec3<T>(p.normal), T(0), p.material});
+        f.surfaces.push_back(surface_of(f.planes.back()));
     }
     std::vector<const Triangle<double>*> kept;
     for (const auto& t : scene.triangles) {
@@ -98,7 +90,7 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
         kept.push_back(&t);
         f.triangles.push_back({Vec3<T>(t.v0), Vec3<T>(t.v1), Vec3<T>(t.v2), Vec3<T>(t.normal),
                                t.material});
-        f.surfaces.push_back({false, Vec3<T>(t.v0), Vec3<T>(t.normal), T(0), t.material});
+        f.surfaces.push_back(surface_of(f.triangles.back()));
     }
     f.clusters = clusters_of<T>(kept);
     for (size_t i = 0; i < f.spheres.size(); ++i) f.everything.spheres.push_back(int(i));

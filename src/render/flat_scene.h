@@ -1,7 +1,7 @@
 // The scene as the tracer reads it: contiguous arrays per shape kind in the
 // tracer's scalar type, only the lights that can contribute, and each light's
 // colour products with each material computed once per frame instead of once
-// per ray. Built from a Scene for one frame; no allocation after that.
+// per ray. Built from a Scene for one frame; tracing allocates nothing.
 #pragma once
 
 #include <vector>
@@ -62,14 +62,35 @@ struct PrimitiveSurface {
     FH_HOT_INLINE void project(const Vec3Lanes<T>& p, Vec3Lanes<T>& point,
                                Vec3Lanes<T>& unit_normal) const {
         if (sphere) {
-            unit_normal = normalize(p - anchor);  // Sphere::normal_at
+            unit_normal = normalize(p - anchor);
             point = anchor + radius * unit_normal;
         } else {
             unit_normal = Vec3Lanes<T>::splat(normal);
             point = p - dot(normal, p - anchor) * normal;
         }
     }
+
+    // One point (tests): the same formula with p in every lane.
+    void project(const Vec3<T>& p, Vec3<T>& point, Vec3<T>& unit_normal) const {
+        Vec3Lanes<T> q, n;
+        project(Vec3Lanes<T>::splat(p), q, n);
+        point = q.lane(0);
+        unit_normal = n.lane(0);
+    }
 };
+
+template <typename T>
+PrimitiveSurface<T> surface_of(const Sphere<T>& s) {
+    return {true, s.center, Vec3<T>(0), s.radius, s.material};
+}
+template <typename T>
+PrimitiveSurface<T> surface_of(const Plane<T>& p) {
+    return {false, p.distance * p.normal, p.normal, T(0), p.material};
+}
+template <typename T>
+PrimitiveSurface<T> surface_of(const Triangle<T>& t) {
+    return {false, t.v0, t.normal, T(0), t.material};
+}
 
 // What shading reads about a material, in the tracer's type.
 template <typename T>
@@ -97,11 +118,10 @@ struct FlatScene {
     std::vector<TriangleCluster<T>> clusters;  // covering the triangles in order
     PrimitiveSubset everything;                // every sphere and cluster
     std::vector<PrimitiveSurface<T>> surfaces;  // by primitive id
-    std::vector<Material<T>> materials;
     std::vector<MaterialShading<T>> shading;    // by material
     std::vector<DirectionalLight<T>> directional_lights;
     std::vector<SpotLight<T>> spot_lights;
-    // Each light's colour products with each material: [light * materials.size() + material].
+    // Each light's colour products with each material: [light * shading.size() + material].
     std::vector<LightTerms<T>> directional_terms;
     std::vector<LightTerms<T>> spot_terms;
     bool fractional_exponents = false;  // some material has whole == false: std::pow needed

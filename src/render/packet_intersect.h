@@ -11,7 +11,6 @@
 #include <optional>
 
 #include "render/flat_scene.h"
-#include "render/tile_culling.h"
 
 namespace fh {
 

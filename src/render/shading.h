@@ -86,8 +86,10 @@ public:
 
 private:
     // What each lane's hit looks like, as the lights and the reflection need
-    // it (lanes without a hit: some primitive's values, finite, which only
-    // masked steps read).
+    // it. Lanes without a hit hold some primitive's values: a finite
+    // reflectivity and material, no glazed bit, but a point and normal that
+    // may be NaN (a ray from a sphere's centre) -- only steps masked by `hit`
+    // or `lit` read those.
     struct Hits {
         Vec3Lanes<T> point, normal;  // normal: unit, facing the ray
         Vec3Lanes<T> origin;         // where secondary rays start
@@ -148,7 +150,7 @@ private:
 
     void add_lights(const RayPacket<T>& ray, const Hits& s, const LaneMask<T>& hit,
                     ColorLanes<T>& local, RayCounts& counts) const {
-        const size_t materials = scene_.materials.size();
+        const size_t materials = scene_.shading.size();
         for (size_t l = 0; l < scene_.directional_lights.size(); ++l) {
             const LightSample<T> sample{Vec3Lanes<T>::splat(scene_.directional_lights[l].to_light()),
                                         splat(kInfinity<T>), splat(T(1))};

@@ -17,12 +17,12 @@ struct Material {
     T diffuse = 0;
     T specular = 0;
     T phong_exponent = 1;
-    int phong_whole = -1;  // phong_exponent when it is a whole number <= kWholePowerLimit, else -1
     bool glazed = false;
     T reflectivity = 0;  // weight of the reflected colour when glazed
 };
 
-// The exponent as a whole number, so shading can use repeated squaring.
+// The exponent as a whole number, so shading can use repeated squaring; -1
+// when it is not one (or above kWholePowerLimit).
 inline int whole_exponent(double e) {
     return (e >= 0 && e <= kWholePowerLimit && std::floor(e) == e) ? int(e) : -1;
 }

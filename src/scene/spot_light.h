@@ -6,7 +6,6 @@
 // and so blows up at the cone's edge; this one falls smoothly to zero there.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>

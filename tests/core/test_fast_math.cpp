@@ -1,4 +1,4 @@
-// The shading loops' branch-free acos and whole powers against the library
+// Shading's branch-free acos and whole powers against the library
 // functions they replace, over their whole domains.
 #include <gtest/gtest.h>
 
@@ -42,6 +42,15 @@ TYPED_TEST(FastMath, AcosAtTheSeamsAndEnds) {
                       std::nextafter(T(1), T(0)), std::nextafter(T(-1), T(0))})
         EXPECT_NEAR(double(acos_fast(x)), std::acos(double(x)), 2 * eps * kPi) << x;
     EXPECT_TRUE(std::isnan(acos_fast(std::numeric_limits<T>::quiet_NaN())));
+}
+
+// x^n by every step from the top bit kWholePowerLimit has (12): the steps the
+// shader takes for the largest exponent there can be.
+template <typename T>
+T pow_whole(T x, T n) {
+    T r = 1;
+    for (int bit = 11; bit >= 0; --bit) pow_whole_step(r, x, n, bit);
+    return r;
 }
 
 TYPED_TEST(FastMath, WholePowersMatchStdPow) {

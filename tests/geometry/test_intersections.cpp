@@ -7,6 +7,7 @@
 #include "geometry/plane.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
+#include "render/flat_scene.h"  // surface_of: the hit point as shading finds it
 
 namespace fh {
 namespace {
@@ -27,7 +28,9 @@ TYPED_TEST(Intersections, SphereFrontHitAndNormal) {
     const auto r = ray<T>({-3, 0, 10}, {0, 0, -1});
     const T t = red.intersect(r, 0, kInfinity<T>);
     EXPECT_NEAR(t, 9, 1e-5);  // top of the sphere at z = 1
-    const Vec3<T> n = red.normal_at(red.point_at(r, t));
+    Vec3<T> p, n;
+    surface_of(red).project(r.at(t), p, n);
+    EXPECT_NEAR(p.z, 1, 1e-6);
     EXPECT_NEAR(n.x, 0, 1e-6);
     EXPECT_NEAR(n.z, 1, 1e-6);
 }
@@ -40,7 +43,8 @@ TYPED_TEST(Intersections, SphereObliqueHit) {
     const T h = T(std::sqrt(0.5));
     const auto r = ray<T>({h, 0, 5}, {0, 0, -1});
     EXPECT_NEAR(s.intersect(r, 0, kInfinity<T>), 5 - h, 1e-5);
-    const Vec3<T> n = s.normal_at(s.point_at(r, 5 - h));
+    Vec3<T> p, n;
+    surface_of(s).project(r.at(5 - h), p, n);
     EXPECT_NEAR(n.x, h, 1e-5);
     EXPECT_NEAR(n.z, h, 1e-5);
 }
@@ -68,8 +72,10 @@ TYPED_TEST(Intersections, PlaneHitsFromAboveAndBelow) {
     // (0,0,1) along (1,0,-1)/sqrt2: t = (-1 - 1) / (-1/sqrt2) = 2 sqrt2.
     EXPECT_NEAR(floor.intersect(ray<T>({0, 0, 1}, {1, 0, -1}), 0, kInfinity<T>), 2 * std::sqrt(2.0),
                 1e-5);
-    const Vec3<T> p = floor.point_at(ray<T>({3, 4, 10}, {0, 0, -1}), 11);
+    Vec3<T> p, n;
+    surface_of(floor).project(ray<T>({3, 4, 10}, {0, 0, -1}).at(11), p, n);
     EXPECT_EQ(p.z, T(-1));
+    EXPECT_EQ(n, Vec3<T>(0, 0, 1));
 }
 
 TYPED_TEST(Intersections, PlaneMissesParallelAndReceding) {

@@ -83,7 +83,7 @@ bool glazed_at(const Scene& s, int x, int y) {
     const auto flat = FlatScene<double>::build(s, plan_effects(s, s.effects, 5));
     const Ray<double> ray = CameraRays<double>(s.cameras.front()).generate(x + 0.5, y + 0.5);
     const Hit<double> hit = closest_hit(flat, ray);
-    return hit.found() && flat.materials[size_t(flat.surface(ray, hit).material)].glazed;
+    return hit.found() && flat.shading[size_t(flat.surface(ray, hit).material)].glazed;
 }
 
 TEST(Accuracy, OneMoreLevelOfDepthChangesOnlyGlazedPixels) {

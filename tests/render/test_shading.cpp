@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "render/background.h"
+#include "io/scene_loader.h"
 #include "render/shading.h"
 
 namespace fh {
@@ -120,6 +121,28 @@ TEST(Shading, MissGivesTheSunset) {
     expect_color(background(dvec3(1, 0, 0)), 255, 127.5, 0, 0);
     RayCounts counts;
     expect_color(trace(Scene{}, Effects{}, 5, {{0, 0, 0}, {0, 0, 1}}, counts), 255, 255, 0, 0);
+}
+
+}  // namespace
+}  // namespace fh
+
+namespace fh {
+namespace {
+
+// Whole Phong exponents take square-and-multiply, one step per bit of the
+// largest; only a fractional one needs std::pow (lane by lane, slow). A
+// scene's materials must be read right for that: this once fell back to
+// std::pow for every material and halved the frame rate, with the same bytes.
+TEST(FlatScene, WholePhongExponentsTakeSquareAndMultiply) {
+    Scene s = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml");
+    const auto report = FlatScene<double>::build(s, plan_effects(s, s.effects, 5));
+    EXPECT_FALSE(report.fractional_exponents);
+    EXPECT_EQ(report.exponent_bits, 7);  // 100 = 0b1100100
+    for (const auto& m : report.shading) EXPECT_TRUE(m.whole);
+    s.materials[0].phong_exponent = 2.5;
+    const auto fractional = FlatScene<double>::build(s, plan_effects(s, s.effects, 5));
+    EXPECT_TRUE(fractional.fractional_exponents);
+    EXPECT_FALSE(fractional.shading[0].whole);
 }
 
 }  // namespace

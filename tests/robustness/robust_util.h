@@ -45,7 +45,6 @@ inline Material<double> material(dvec3 color, double ambient, double diffuse, do
     m.diffuse = diffuse;
     m.specular = specular;
     m.phong_exponent = phong;
-    m.phong_whole = whole_exponent(phong);
     m.glazed = glazed;
     m.reflectivity = reflectivity;
     return m;

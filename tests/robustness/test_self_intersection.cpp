@@ -20,6 +20,7 @@
 #include "geometry/sphere.h"
 #include "robust_util.h"
 #include "scene/camera.h"
+#include "render/flat_scene.h"  // surface_of: the hit point as shading finds it
 
 namespace fh {
 namespace {
@@ -96,14 +97,13 @@ TYPED_TEST(SelfIntersection, NoRayFindsTheSurfaceItLeaves) {
                 const T tp = plane.intersect(ray, T(0), ts);
                 if (ts == kInfinity<T> && tp == kInfinity<T>) continue;
                 const bool on_sphere = tp == kInfinity<T>;
+                // The hit point and normal as shading finds them.
                 Vec3<T> p, n;
                 if (on_sphere) {
-                    p = sphere.point_at(ray, ts);
-                    n = sphere.normal_at(p);
+                    surface_of(sphere).project(ray.at(ts), p, n);
                     ++sphere_pixels;
                 } else {
-                    p = plane.point_at(ray, tp);
-                    n = plane.normal;
+                    surface_of(plane).project(ray.at(tp), p, n);
                     ++plane_pixels;
                 }
                 if (glm::dot(n, ray.direction) > T(0)) n = -n;

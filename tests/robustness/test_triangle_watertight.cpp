@@ -103,7 +103,7 @@ TYPED_TEST(TriangleRobust, TetrahedronIsWatertightAtEdgesAndVertices) {
         const Vec3<T> o(target - distance * d);
         const Vec3<T> dir(glm::normalize(target - dvec3(o)));
         const Ray<T> ray{o, dir};
-        // The nearest hit, as FlatScene::closest finds it.
+        // The nearest hit, as closest_hits keeps it: the first of equal ones.
         T best = kInfinity<T>;
         int face = -1;
         for (int f = 0; f < 4; ++f) {
@@ -123,8 +123,10 @@ TYPED_TEST(TriangleRobust, TetrahedronIsWatertightAtEdgesAndVertices) {
             // rounded to T -- to the plane of the face it hit, in double. (Not
             // `distance`: at n.d = 0.02, rounding the origin to float alone
             // moves the hit by ulp/0.02 ~ 1e-5 along the ray.)
-            // The origin is read back through memory: GCC 12's SLP vectoriser
-            // otherwise reuses the double it was rounded from (seen here).
+            // The origin is read back through memory. Seen here with GCC 12
+            // at -O2 and -O3: double(o.x) printed more bits than a float
+            // holds -- the double o was rounded from -- and the difference
+            // went away with -fno-tree-slp-vectorize.
             volatile T traced[3] = {o.x, o.y, o.z};
             const dvec3 origin(traced[0], traced[1], traced[2]);
             const dvec3 n = out[size_t(face)], on_face = kVertex[size_t(kFace[size_t(face)][0])];

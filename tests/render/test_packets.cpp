@@ -1,0 +1,80 @@
+// A packet is only a faster way to trace its rays: every pixel of
+// render_frame -- packets of different rays, partial packets at a row's end,
+// tiles that skip what their frustum cannot reach, primitives blended into
+// the lanes that hit them -- is that pixel's rays traced one at a time.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "io/scene_loader.h"
+#include "render/render.h"
+#include "render/sampler.h"
+#include "render/shading.h"
+
+namespace fh {
+namespace {
+
+// The pixel bytes render_frame should give, from rays traced one by one:
+// each sample clamped (NaN: black), the mean of a pixel's samples rounded.
+template <typename T>
+Image one_ray_at_a_time(const Scene& scene, const Camera& camera, int spp) {
+    const auto flat = FlatScene<T>::build(scene, plan_effects(scene, scene.effects, 5));
+    const CameraRays<T> rays(camera);
+    const StrataGrid grid = strata_for(spp);
+    Image image(camera.width, camera.height);
+    with_shader(flat, [&](const auto& shader) {
+        RayCounts counts;
+        for (int y = 0; y < camera.height; ++y)
+            for (int x = 0; x < camera.width; ++x) {
+                double sum[3] = {0, 0, 0};
+                for (int s = 0; s < spp; ++s) {
+                    const SampleOffset o = sample_offset(x, y, s, grid);
+                    const Color<T> c = shader.trace(rays.generate(T(x + o.x), T(y + o.y)), counts);
+                    for (int k = 0; k < 3; ++k)
+                        sum[k] += std::isfinite(c[k]) ? std::min(std::max(double(c[k]), 0.0), 255.0) : 0.0;
+                }
+                for (int k = 0; k < 3; ++k)
+                    image.pixel(x, y)[k] = std::uint8_t(std::floor(sum[k] / spp + 0.5));
+            }
+    });
+    return image;
+}
+
+template <typename T>
+void expect_same_as_one_ray_at_a_time(const Scene& scene, const Camera& camera, int spp) {
+    RenderSettings settings;
+    settings.samples_per_pixel = spp;
+    settings.precision = std::is_same_v<T, float> ? Precision::single : Precision::dual;
+    ThreadPool pool(2);
+    const Image packets = render_frame(scene, camera, settings, scene.effects, &pool).image;
+    const Image expected = one_ray_at_a_time<T>(scene, camera, spp);
+    int differing = 0;
+    for (size_t i = 0; i < packets.rgb.size(); ++i) differing += packets.rgb[i] != expected.rgb[i];
+    EXPECT_EQ(differing, 0) << camera.name << ", " << spp << " spp, " << (sizeof(T) == 4 ? "float" : "double");
+}
+
+// 97 x 61: rows end in partial packets and partial tiles, both ways.
+Camera small(Camera c) {
+    c.width = 97;
+    c.height = 61;
+    return c;
+}
+
+TEST(Packets, RenderFrameIsEachPixelsRaysTracedOneAtATime) {
+    const Scene scene = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml");
+    for (const Camera& camera : scene.cameras)
+        for (const int spp : {1, 4}) {
+            expect_same_as_one_ray_at_a_time<double>(scene, small(camera), spp);
+            expect_same_as_one_ray_at_a_time<float>(scene, small(camera), spp);
+        }
+}
+
+TEST(Packets, SameWithANarrowSpotCone) {
+    // Figure 6: the spot light's cone test on, lanes on both sides of its edge.
+    const Scene scene = load_scene(FIRSTHIT_SOURCE_DIR "/animations/figures/figure6.yaml");
+    expect_same_as_one_ray_at_a_time<double>(scene, small(scene.cameras.front()), 1);
+    expect_same_as_one_ray_at_a_time<float>(scene, small(scene.cameras.front()), 1);
+}
+
+}  // namespace
+}  // namespace fh
