@@ -1,24 +1,24 @@
 #!/usr/bin/env bash
 # Renders a movie's frames and encodes them: the steps of `make movies`.
 #
-#   scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR] [--threads N] [--quiet]
+#   scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR] [--encoder-threads N] [--quiet]
 # leaves OUTPUT_DIR/NAME/frame_*.png and OUTPUT_DIR/NAME.mp4, NAME the movie
 # file's name without .yaml. FIRSTHIT names the binary (default: build/firsthit).
-#   --threads N   x264's threads (encode.sh --threads); default: all cores
-#   --quiet       no progress line while the frames render
+#   --encoder-threads N   x264's threads (encode.sh --threads); default: all cores
+#   --quiet               no progress line while the frames render
 #
 # The encoder runs while the frames render: firsthit writes each PNG and
 # also streams the frames, in order, as raw RGB24 into ffmpeg (encode.sh
-# --raw), which gives the same MP4 as encoding the PNGs afterwards with the
-# same --threads.
+# --raw), which gives the same MP4 as encoding the PNGs afterwards with as
+# many encoder threads.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 firsthit=${FIRSTHIT:-$here/../build/firsthit}
-usage="usage: scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR] [--threads N] [--quiet]"
+usage="usage: scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR] [--encoder-threads N] [--quiet]"
 positional=() encode_options=() frames_options=()
 while [[ $# -gt 0 ]]; do
   case $1 in
-    --threads) [[ $# -ge 2 ]] || { echo "$usage" >&2; exit 2; }; encode_options+=(--threads "$2"); shift 2 ;;
+    --encoder-threads) [[ $# -ge 2 ]] || { echo "$usage" >&2; exit 2; }; encode_options+=(--threads "$2"); shift 2 ;;
     --quiet) frames_options+=(--quiet); shift ;;
     -*) echo "make_movie.sh: error: unknown option '$1'" >&2; echo "$usage" >&2; exit 2 ;;
     *) positional+=("$1"); shift ;;

@@ -8,7 +8,7 @@
 #   scripts/make_movies.sh [OUTPUT_DIR [MOVIE.yaml ...]]
 # (default: output/, and animations/movie1.yaml and movie2.yaml). FIRSTHIT
 # names the binary (default: build/firsthit). Exits non-zero if any movie
-# failed; Ctrl-C stops them all.
+# failed (the others still finish); Ctrl-C, TERM or HUP stop them all.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 firsthit=${FIRSTHIT:-$here/../build/firsthit}
@@ -16,22 +16,34 @@ export FIRSTHIT=$firsthit
 outdir=${1:-$here/../output}
 movies=("$here/../animations/movie1.yaml" "$here/../animations/movie2.yaml")
 if [[ $# -ge 2 ]]; then movies=("${@:2}"); fi
+names=()
+for m in "${movies[@]}"; do names+=("$(basename "$m" .yaml)"); done
+if [[ $(printf '%s\n' "${names[@]}" | sort | uniq -d) ]]; then
+  echo "make_movies.sh: error: two movies named alike would share $outdir/NAME: ${names[*]}" >&2
+  exit 2
+fi
 
-# Each movie in a process group of its own (job control), so Ctrl-C and
-# TERM can stop a whole pipeline, renderer and encoder.
-set -m
+# Each movie in a session of its own (setsid), so a signal can stop its whole
+# pipeline, renderer and encoder, while this script keeps the terminal and
+# gets Ctrl-C itself.
 pids=() logs=()
 trap 'rm -f "${logs[@]}"' EXIT
+show_logs() {
+  for i in "${!logs[@]}"; do cat "${logs[$i]}" >&2; done
+}
 stop() {
   for pid in "${pids[@]}"; do kill -TERM -- "-$pid" 2>/dev/null || true; done
   wait || true
-  echo "make_movies.sh: stopped" >&2
-  exit 130
+  show_logs
+  echo "make_movies.sh: stopped by SIG$1" >&2
+  exit "$2"
 }
-trap stop INT TERM
+trap 'stop INT 130' INT
+trap 'stop TERM 143' TERM
+trap 'stop HUP 129' HUP
 for m in "${movies[@]}"; do
   logs+=("$(mktemp)")  # what each movie says, shown once the progress line is gone
-  "$here/make_movie.sh" "$m" "$outdir" --threads 1 --quiet >"${logs[-1]}" 2>&1 &
+  setsid "$here/make_movie.sh" "$m" "$outdir" --encoder-threads 1 --quiet >"${logs[-1]}" 2>&1 &
   pids+=($!)
 done
 
@@ -43,9 +55,8 @@ if [[ -t 2 ]]; then
   while running; do
     line=""
     for i in "${!movies[@]}"; do
-      name=$(basename "${movies[$i]}" .yaml)
-      frames=("$outdir/$name"/frame_*.png)
-      line+="$name ${#frames[@]}/${totals[$i]:-?}   "
+      frames=("$outdir/${names[$i]}"/frame_*.png)
+      line+="${names[$i]} ${#frames[@]}/${totals[$i]:-?}   "
     done
     printf '\rmake_movies.sh: %s' "$line" >&2
     sleep 1

@@ -1,7 +1,7 @@
-// firsthit frames and scripts/encode.sh end to end, on a tiny movie
-// (64 x 64, 12 frames) made from the report's scene.
+// firsthit frames and the movie scripts (encode.sh, make_movie.sh,
+// make_movies.sh) end to end, on tiny movies (64 x 64, 12 frames, and a few
+// other sizes) made from the report's scene.
 #include <gtest/gtest.h>
-
 
 #include "cli/small_movie.h"
 #include "support/png_read.h"
@@ -18,6 +18,11 @@ std::vector<std::string> frame_files(const fs::path& dir) { return files_in(dir)
 
 std::string frames(const fs::path& dir, const std::string& extra) {
     return "frames " + (dir / "tiny.yaml").string() + " --quiet " + extra;
+}
+
+// scripts/NAME with the arguments, driving this build's firsthit.
+CommandResult run_script(const std::string& name, const std::string& args) {
+    return run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " + source_path("scripts/" + name) + " " + args);
 }
 
 TEST(FramesCli, RendersEveryFrameWhole) {
@@ -116,13 +121,11 @@ TEST(FramesCli, RawVideoErrors) {
 
 TEST(EncodeScript, StreamingWhileRenderingGivesTheSameMp4AsEncodingTheFiles) {
     const fs::path dir = tiny_movie("encode_stream");
-    const auto made = run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " +
-                                source_path("scripts/make_movie.sh") + " " +
-                                (dir / "tiny.yaml").string() + " " + (dir / "out").string());
+    const auto made = run_script("make_movie.sh", (dir / "tiny.yaml").string() + " " + (dir / "out").string());
     ASSERT_EQ(made.status, 0) << made.err;
     ASSERT_EQ(frame_files(dir / "out" / "tiny").size(), 12u);
-    const auto r = run_shell(source_path("scripts/encode.sh") + " " + (dir / "out" / "tiny").string() +
-                             " " + (dir / "files.mp4").string() + " --fps 12");
+    const auto r = run_script("encode.sh", (dir / "out" / "tiny").string() +
+                              " " + (dir / "files.mp4").string() + " --fps 12");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(slurp(dir / "out" / "tiny.mp4"), slurp(dir / "files.mp4"));
     EXPECT_EQ(files_in(dir / "out"), (std::vector<std::string>{"tiny", "tiny.mp4"}));  // no temporaries
@@ -132,8 +135,7 @@ TEST(EncodeScript, MakesAnMp4ThatFfprobeReads) {
     const fs::path dir = tiny_movie("encode");
     ASSERT_EQ(run_firsthit(frames(dir, "--out " + (dir / "f").string())).status, 0);
     const fs::path mp4 = dir / "tiny.mp4";
-    const auto r = run_shell(source_path("scripts/encode.sh") + " " + (dir / "f").string() + " " +
-                             mp4.string() + " --fps 12");
+    const auto r = run_script("encode.sh", (dir / "f").string() + " " + mp4.string() + " --fps 12");
     ASSERT_EQ(r.status, 0) << r.err;
     const auto probe = run_shell(
         "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
@@ -149,15 +151,13 @@ TEST(EncodeScript, MakesAnMp4ThatFfprobeReads) {
 TEST(EncodeScript, RefusesEmptyFoldersAndGaps) {
     const fs::path dir = tiny_movie("encode_bad");
     fs::create_directories(dir / "empty");
-    auto r = run_shell(source_path("scripts/encode.sh") + " " + (dir / "empty").string() + " " +
-                       (dir / "x.mp4").string());
+    auto r = run_script("encode.sh", (dir / "empty").string() + " " + (dir / "x.mp4").string());
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("holds no frames"), std::string::npos) << r.err;
 
     ASSERT_EQ(run_firsthit(frames(dir, "--out " + (dir / "f").string())).status, 0);
     fs::remove(dir / "f" / "frame_0004.png");
-    r = run_shell(source_path("scripts/encode.sh") + " " + (dir / "f").string() + " " +
-                  (dir / "x.mp4").string());
+    r = run_script("encode.sh", (dir / "f").string() + " " + (dir / "x.mp4").string());
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("expected frame_0004.png, found frame_0005.png"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "x.mp4"));
@@ -173,16 +173,15 @@ std::string probe(const fs::path& mp4) {
 
 TEST(EncodeScript, OneEncoderThreadStreamedOrFromFilesGivesOneMp4) {
     const fs::path dir = tiny_movie("encode_threads");
-    const auto made = run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " +
-                                source_path("scripts/make_movie.sh") + " " + (dir / "tiny.yaml").string() +
-                                " " + (dir / "out").string() + " --threads 1 --quiet");
+    const auto made = run_script("make_movie.sh", (dir / "tiny.yaml").string() +
+                                 " " + (dir / "out").string() + " --encoder-threads 1 --quiet");
     ASSERT_EQ(made.status, 0) << made.err;
-    const auto r = run_shell(source_path("scripts/encode.sh") + " " + (dir / "out" / "tiny").string() +
-                             " " + (dir / "files.mp4").string() + " --fps 12 --threads 1");
+    const auto r = run_script("encode.sh", (dir / "out" / "tiny").string() +
+                              " " + (dir / "files.mp4").string() + " --fps 12 --threads 1");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(slurp(dir / "out" / "tiny.mp4"), slurp(dir / "files.mp4"));
-    const auto bad = run_shell(source_path("scripts/encode.sh") + " " + (dir / "out" / "tiny").string() +
-                               " " + (dir / "x.mp4").string() + " --threads 0");
+    const auto bad = run_script("encode.sh", (dir / "out" / "tiny").string() +
+                                " " + (dir / "x.mp4").string() + " --threads 0");
     EXPECT_EQ(bad.status, 2);
     EXPECT_EQ(bad.err, "encode.sh: error: --threads needs a whole number > 0, got '0'\n");
 }
@@ -190,12 +189,11 @@ TEST(EncodeScript, OneEncoderThreadStreamedOrFromFilesGivesOneMp4) {
 TEST(EncodeScript, OddSidesArePaddedToEvenOnBothPaths) {
     // H.264 in yuv420p needs even sides: 33 x 17 frames become 34 x 18.
     const fs::path dir = small_movie("encode_odd", 33, 17, 6, "odd.yaml");
-    const auto made = run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " +
-                                source_path("scripts/make_movie.sh") + " " + (dir / "odd.yaml").string() +
-                                " " + (dir / "out").string() + " --quiet");
+    const auto made = run_script("make_movie.sh", (dir / "odd.yaml").string() +
+                                 " " + (dir / "out").string() + " --quiet");
     ASSERT_EQ(made.status, 0) << made.err;
-    const auto r = run_shell(source_path("scripts/encode.sh") + " " + (dir / "out" / "odd").string() +
-                             " " + (dir / "files.mp4").string() + " --fps 6");
+    const auto r = run_script("encode.sh", (dir / "out" / "odd").string() +
+                              " " + (dir / "files.mp4").string() + " --fps 6");
     ASSERT_EQ(r.status, 0) << r.err;
     for (const fs::path& mp4 : {dir / "out" / "odd.mp4", dir / "files.mp4"})
         EXPECT_EQ(probe(mp4), "width=34\nheight=18\nnb_read_frames=6\n") << mp4;
@@ -207,17 +205,16 @@ TEST(MakeMovies, RendersAndEncodesMoviesSideBySide) {
     const fs::path dir = small_movie("make_movies", 48, 32, 12, "a.yaml");
     std::ofstream(dir / "b.yaml") << std::regex_replace(slurp(dir / "a.yaml"), std::regex("lights: \\[ambient, spot\\]"),
                                                         "lights: [ambient, directional]");
-    const auto r = run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " +
-                             source_path("scripts/make_movies.sh") + " " + (dir / "out").string() + " " +
-                             (dir / "a.yaml").string() + " " + (dir / "b.yaml").string());
+    const auto r = run_script("make_movies.sh", (dir / "out").string() + " " +
+                              (dir / "a.yaml").string() + " " + (dir / "b.yaml").string());
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(files_in(dir / "out"), (std::vector<std::string>{"a", "a.mp4", "b", "b.mp4"}));
     for (const char* name : {"a", "b"}) {
         EXPECT_EQ(frame_files(dir / "out" / name).size(), 12u);
         EXPECT_EQ(probe(dir / "out" / (std::string(name) + ".mp4")), "width=48\nheight=32\nnb_read_frames=12\n");
         // One x264 thread each: the same bytes as encoding the frames so.
-        const auto e = run_shell(source_path("scripts/encode.sh") + " " + (dir / "out" / name).string() + " " +
-                                 (dir / (std::string(name) + "_files.mp4")).string() + " --fps 12 --threads 1");
+        const auto e = run_script("encode.sh", (dir / "out" / name).string() + " " +
+                                  (dir / (std::string(name) + "_files.mp4")).string() + " --fps 12 --threads 1");
         ASSERT_EQ(e.status, 0) << e.err;
         EXPECT_EQ(slurp(dir / "out" / (std::string(name) + ".mp4")), slurp(dir / (std::string(name) + "_files.mp4")))
             << name;
@@ -228,13 +225,32 @@ TEST(MakeMovies, RendersAndEncodesMoviesSideBySide) {
 TEST(MakeMovies, AFailingMovieFailsTheRunAndLeavesNoMp4) {
     const fs::path dir = small_movie("make_movies_bad", 32, 32, 6, "good.yaml");
     std::ofstream(dir / "bad.yaml") << "scene: missing.yaml\ncamera: perspective\n";
-    const auto r = run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " +
-                             source_path("scripts/make_movies.sh") + " " + (dir / "out").string() + " " +
-                             (dir / "good.yaml").string() + " " + (dir / "bad.yaml").string());
+    const auto r = run_script("make_movies.sh", (dir / "out").string() + " " +
+                              (dir / "good.yaml").string() + " " + (dir / "bad.yaml").string());
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.err.find("missing.yaml"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "out" / "bad.mp4"));
     EXPECT_TRUE(fs::exists(dir / "out" / "good.mp4"));  // the other movie is not harmed
+}
+
+TEST(MakeMovies, TermStopsEveryRendererAndEncoderAndLeavesNoMp4) {
+    // Two movies slow enough to be caught in the middle.
+    const std::string slow = "render: {samples_per_pixel: 8}\n";
+    const fs::path dir = small_movie("make_movies_term", 96, 96, 60, "a.yaml", slow);
+    std::ofstream(dir / "b.yaml") << slurp(dir / "a.yaml");
+    const fs::path out = dir / "out";
+    const auto r = run_shell(
+        "bash -c 'FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " + source_path("scripts/make_movies.sh") + " " +
+        out.string() + " " + (dir / "a.yaml").string() + " " + (dir / "b.yaml").string() + " & pid=$!; " +
+        "for i in $(seq 2000); do [ -e " + (out / "a" / "frame_0002.png").string() + " ] && break; sleep 0.01; done; " +
+        "kill -TERM $pid; wait $pid; echo status=$?; sleep 1; " +
+        // [f]: the pattern must not match the shell that runs it.
+        "echo running=$(pgrep -fc -- \"[f]irsthit frames .*" + out.string() + "|[f]fmpeg .*" + out.string() +
+        "|[m]ake_movie.sh .*" + out.string() + "\" || true)'");
+    EXPECT_NE(r.out.find("status=143\n"), std::string::npos) << r.out << r.err;
+    EXPECT_NE(r.out.find("running=0\n"), std::string::npos) << r.out;  // no renderer, no encoder
+    EXPECT_NE(r.err.find("make_movies.sh: stopped by SIGTERM"), std::string::npos) << r.err;
+    for (const auto& name : files_in(out)) EXPECT_EQ(name.find(".mp4"), std::string::npos) << name;
 }
 
 }  // namespace
