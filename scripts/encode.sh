@@ -5,11 +5,12 @@
 #
 #   scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N] [--threads N]
 #       a folder of frame_0000.png, frame_0001.png, ... (default fps: 30)
-#   scripts/encode.sh --raw WIDTHxHEIGHT OUT.mp4 [--fps N] [--threads N]
-#       raw RGB24 frames on standard input, as `firsthit frames --raw-video -`
+#   scripts/encode.sh --raw WIDTHxHEIGHT OUT.mp4 [--fps N] [--threads N] [--pix-fmt P]
+#       raw frames on standard input, as `firsthit frames --raw-video -`
 #       writes them while it renders: the encoder then runs beside the
-#       renderer (scripts/make_movie.sh). Same settings, so the same video as
-#       encoding the frame files afterwards.
+#       renderer (scripts/make_movie.sh). RGB24 (the default) gives the same
+#       video as encoding the frame files afterwards; yuv420p frames
+#       (`--raw-pix-fmt yuv420p`) skip ffmpeg's own colour conversion.
 #   --threads N: x264's threads (default: ffmpeg's choice, all cores). The
 #       video depends on it: encode with the same N to get the same bytes.
 #       `make movies` uses 1 per movie, with both movies at once: less work
@@ -17,7 +18,7 @@
 set -euo pipefail
 
 die() { echo "encode.sh: error: $*" >&2; exit 2; }
-usage="usage: scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N] [--threads N]  |  scripts/encode.sh --raw WxH OUT.mp4 [--fps N] [--threads N]"
+usage="usage: scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N] [--threads N]  |  scripts/encode.sh --raw WxH OUT.mp4 [--fps N] [--threads N] [--pix-fmt rgb24|yuv420p]"
 
 raw_size=
 if [[ ${1:-} == --raw ]]; then
@@ -35,12 +36,17 @@ else
 fi
 fps=30
 threads=()
+raw_pix_fmt=rgb24
 while [[ $# -gt 0 ]]; do
   case $1 in
     --fps) [[ $# -ge 2 ]] || die "--fps needs a value"; fps=$2; shift 2 ;;
     --threads)
       [[ $# -ge 2 && $2 =~ ^[1-9][0-9]*$ ]] || die "--threads needs a whole number > 0, got '${2:-}'"
       threads=(-threads "$2"); shift 2 ;;
+    --pix-fmt)
+      [[ -n $raw_size ]] || die "--pix-fmt is for --raw frames (frame files are PNG)"
+      [[ ${2:-} == rgb24 || ${2:-} == yuv420p ]] || die "--pix-fmt is rgb24 or yuv420p, got '${2:-}'"
+      raw_pix_fmt=$2; shift 2 ;;
     *) die "unknown option '$1'" ;;
   esac
 done
@@ -48,7 +54,7 @@ done
 command -v ffmpeg >/dev/null || die "ffmpeg not found; install it with: apt-get install ffmpeg"
 
 if [[ -n $raw_size ]]; then
-  input=(-f rawvideo -pix_fmt rgb24 -s "$raw_size" -framerate "$fps" -i -)
+  input=(-f rawvideo -pix_fmt "$raw_pix_fmt" -s "$raw_size" -framerate "$fps" -i -)
   what="raw frames from standard input"
   width=${raw_size%x*} height=${raw_size#*x}
 else

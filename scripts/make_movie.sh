@@ -1,24 +1,30 @@
 #!/usr/bin/env bash
 # Renders a movie's frames and encodes them: the steps of `make movies`.
 #
-#   scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR] [--encoder-threads N] [--quiet]
+#   scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR] [--encoder-threads N] [--raw-pix-fmt P] [--quiet]
 # leaves OUTPUT_DIR/NAME/frame_*.png and OUTPUT_DIR/NAME.mp4, NAME the movie
 # file's name without .yaml. FIRSTHIT names the binary (default: build/firsthit).
 #   --encoder-threads N   x264's threads (encode.sh --threads); default: all cores
+#   --raw-pix-fmt P       the streamed frames' pixels: rgb24 (default) or
+#                         yuv420p, converted by firsthit on its render
+#                         threads instead of by ffmpeg (`make movies`)
 #   --quiet               no progress line while the frames render
 #
 # The encoder runs while the frames render: firsthit writes each PNG and
-# also streams the frames, in order, as raw RGB24 into ffmpeg (encode.sh
-# --raw), which gives the same MP4 as encoding the PNGs afterwards with as
-# many encoder threads.
+# also streams the frames, in order, as raw video into ffmpeg (encode.sh
+# --raw). In RGB24 that gives the same MP4 as encoding the PNGs afterwards
+# with as many encoder threads; in yuv420p the chroma is firsthit's 2x2 mean
+# (src/io/yuv420.h), within a few levels of ffmpeg's.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 firsthit=${FIRSTHIT:-$here/../build/firsthit}
-usage="usage: scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR] [--encoder-threads N] [--quiet]"
+usage="usage: scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR] [--encoder-threads N] [--raw-pix-fmt P] [--quiet]"
 positional=() encode_options=() frames_options=()
 while [[ $# -gt 0 ]]; do
   case $1 in
     --encoder-threads) [[ $# -ge 2 ]] || { echo "$usage" >&2; exit 2; }; encode_options+=(--threads "$2"); shift 2 ;;
+    --raw-pix-fmt) [[ $# -ge 2 ]] || { echo "$usage" >&2; exit 2; }
+                   frames_options+=(--raw-pix-fmt "$2"); encode_options+=(--pix-fmt "$2"); shift 2 ;;
     --quiet) frames_options+=(--quiet); shift ;;
     -*) echo "make_movie.sh: error: unknown option '$1'" >&2; echo "$usage" >&2; exit 2 ;;
     *) positional+=("$1"); shift ;;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `make movies`: the report's Movie 1 and Movie 2, rendered and encoded at the
-# same time (scripts/make_movie.sh each), x264 with one thread per movie.
+# same time (scripts/make_movie.sh each), x264 with one thread per movie,
+# fed yuv420p frames that firsthit converts on its render threads.
 # Two single-threaded encoders beside two renderers keep both cores busy to
 # the end with less work in all than one movie at a time with x264 on both
 # cores (README, Speed). On a terminal one line shows both movies' progress.
@@ -43,7 +44,7 @@ trap 'stop TERM 143' TERM
 trap 'stop HUP 129' HUP
 for m in "${movies[@]}"; do
   logs+=("$(mktemp)")  # what each movie says, shown once the progress line is gone
-  setsid "$here/make_movie.sh" "$m" "$outdir" --encoder-threads 1 --quiet >"${logs[-1]}" 2>&1 &
+  setsid "$here/make_movie.sh" "$m" "$outdir" --encoder-threads 1 --raw-pix-fmt yuv420p --quiet >"${logs[-1]}" 2>&1 &
   pids+=($!)
 done
 

@@ -54,6 +54,10 @@ second and the time left.
                    frames render: `... --raw-video - | ffmpeg -f rawvideo
                    -pix_fmt rgb24 -s WxH -r FPS -i - ...` (scripts/encode.sh
                    --raw does this); not with --shard or --resume
+  --raw-pix-fmt P  the raw video's pixels: rgb24 (default) or yuv420p,
+                   BT.601 limited range as ffmpeg converts RGB, luma the
+                   same bytes, chroma the mean of each 2x2 block; converted
+                   on the render threads, which spares the encoder the work
   --threads N      worker threads (default: one per core)
   --spp N, --depth N, --precision P, --adaptive, --aa-threshold X,
   --aa-samples N, --no-prune   as for render
@@ -79,7 +83,7 @@ int run_frames(const Words& words) {
         "frames", words,
         {{"--out"}, {"--range"}, {"--shard"}, {"--shards"}, {"--resume", false}, {"--threads"}, {"--spp"},
          {"--depth"}, {"--precision"}, {"--no-prune", false}, {"--adaptive", false}, {"--aa-threshold"},
-         {"--aa-samples"}, {"--stats", false}, {"--quiet", false}, {"--raw-video"}});
+         {"--aa-samples"}, {"--stats", false}, {"--quiet", false}, {"--raw-video"}, {"--raw-pix-fmt"}});
     if (args.positional().size() != 1)
         throw UsageError("expected one MOVIE file, got " + std::to_string(args.positional().size()));
     const std::string file = args.positional()[0];
@@ -128,7 +132,15 @@ int run_frames(const Words& words) {
             throw UsageError("--raw-video streams whole runs of frames: not with --shard or --resume");
         if (*raw == "-" && args.has("--stats"))
             throw UsageError("--raw-video - writes frames to standard output: not with --stats");
-        raw_video.emplace(*raw, 8);
+        RawPixelFormat format = RawPixelFormat::rgb24;
+        try {
+            if (const auto name = args.value("--raw-pix-fmt")) format = parse_raw_pixel_format(*name);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("--raw-pix-fmt: ") + e.what());
+        }
+        raw_video.emplace(*raw, 8, format);
+    } else if (args.has("--raw-pix-fmt")) {
+        throw UsageError("--raw-pix-fmt goes with --raw-video");
     }
     if (args.has("--resume"))
         std::erase_if(frames, [&](int i) { return is_complete_png((out / frame_file_name(i, n)).string()); });

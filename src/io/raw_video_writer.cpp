@@ -8,10 +8,18 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "io/yuv420.h"
+
 namespace fh {
 
-RawVideoWriter::RawVideoWriter(const std::string& path, int window)
-    : name_(path == "-" ? "standard output" : path), window_(window < 1 ? 1 : window) {
+RawPixelFormat parse_raw_pixel_format(const std::string& name) {
+    if (name == "rgb24") return RawPixelFormat::rgb24;
+    if (name == "yuv420p") return RawPixelFormat::yuv420p;
+    throw std::invalid_argument("unknown raw pixel format '" + name + "' (rgb24 or yuv420p)");
+}
+
+RawVideoWriter::RawVideoWriter(const std::string& path, int window, RawPixelFormat format)
+    : name_(path == "-" ? "standard output" : path), window_(window < 1 ? 1 : window), format_(format) {
     // A closed pipe is an error to report (EPIPE), not a signal that kills us.
     std::signal(SIGPIPE, SIG_IGN);
     if (path == "-") {
@@ -29,10 +37,12 @@ RawVideoWriter::~RawVideoWriter() {
 }
 
 void RawVideoWriter::put(int position, Image image) {
+    std::vector<std::uint8_t> frame =
+        format_ == RawPixelFormat::yuv420p ? to_yuv420p(image) : std::move(image.rgb);
     std::unique_lock lock(mutex_);
     advanced_.wait(lock, [&] { return position < next_ + window_ || !error_.empty(); });
     if (!error_.empty()) throw std::runtime_error(error_);
-    held_.emplace(position, std::move(image));
+    held_.emplace(position, std::move(frame));
     for (auto it = held_.find(next_); it != held_.end(); it = held_.find(next_)) {
         write_all(it->second);
         held_.erase(it);
@@ -47,9 +57,9 @@ void RawVideoWriter::fail(const std::string& why) {
     advanced_.notify_all();
 }
 
-void RawVideoWriter::write_all(const Image& image) {
-    const auto* p = image.rgb.data();
-    size_t left = image.rgb.size();
+void RawVideoWriter::write_all(const std::vector<std::uint8_t>& frame) {
+    const auto* p = frame.data();
+    size_t left = frame.size();
     while (left > 0) {
         const ssize_t n = ::write(fd_, p, left);
         if (n < 0 && errno == EINTR) continue;

@@ -1,6 +1,7 @@
-// Frames, in order, as raw RGB24 (width * height * 3 bytes each) to a pipe or
-// file: what an encoder reads with `ffmpeg -f rawvideo -pix_fmt rgb24 -s WxH
-// -i -`. `make movies` pipes `firsthit frames --raw-video -` into ffmpeg, so
+// Frames, in order, as raw video to a pipe or file: RGB24 (width * height * 3
+// bytes each), what an encoder reads with `ffmpeg -f rawvideo -pix_fmt rgb24
+// -s WxH -i -`, or converted to yuv420p (io/yuv420.h) by the worker that
+// rendered the frame. `make movies` pipes `firsthit frames --raw-video -` into ffmpeg, so
 // encoding runs while frames are rendered instead of after (issue 7).
 //
 // Workers finish frames a little out of order; each frame is held until all
@@ -13,35 +14,43 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "render/image.h"
 
 namespace fh {
 
+enum class RawPixelFormat { rgb24, yuv420p };
+
+// "rgb24" or "yuv420p"; std::invalid_argument naming the choices otherwise.
+RawPixelFormat parse_raw_pixel_format(const std::string& name);
+
 class RawVideoWriter {
 public:
     // path "-" is standard output; anything else is created or truncated.
-    RawVideoWriter(const std::string& path, int window);
+    RawVideoWriter(const std::string& path, int window, RawPixelFormat format = RawPixelFormat::rgb24);
     ~RawVideoWriter();
     RawVideoWriter(const RawVideoWriter&) = delete;
     RawVideoWriter& operator=(const RawVideoWriter&) = delete;
 
-    // The frame at this position of the stream (0, 1, 2, ...).
+    // The frame at this position of the stream (0, 1, 2, ...). Converted
+    // (yuv420p) by the calling thread, before it waits for its turn.
     void put(int position, Image image);
 
     // A frame will never come (its worker failed): release the waiting ones.
     void fail(const std::string& why);
 
 private:
-    void write_all(const Image& image);  // with mutex_ held
+    void write_all(const std::vector<std::uint8_t>& frame);  // with mutex_ held
 
     std::string name_;
     int fd_ = -1;
     bool owns_fd_ = false;
     int window_;
+    RawPixelFormat format_;
     std::mutex mutex_;
     std::condition_variable advanced_;
-    std::map<int, Image> held_;
+    std::map<int, std::vector<std::uint8_t>> held_;  // frames in the stream's format
     int next_ = 0;
     std::string error_;  // set once a write failed
 };

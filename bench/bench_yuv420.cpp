@@ -1,0 +1,26 @@
+// RGB to yuv420p (io/yuv420.h) of one of the report's frames (Movie 1,
+// frame 100, 800x800), as `make movies` converts every frame on the render
+// threads before streaming it to the encoder.
+//   build/bench/firsthit_bench --benchmark_filter=Yuv
+#include <benchmark/benchmark.h>
+
+#include "anim/movie.h"
+#include "io/movie_loader.h"
+#include "io/yuv420.h"
+#include "render/render.h"
+
+namespace fh {
+namespace {
+
+void BM_ToYuv420p(benchmark::State& state) {
+    const Movie movie = load_movie(FIRSTHIT_SOURCE_DIR "/animations/movie1.yaml");
+    const Image image = render_frame(movie.scene, camera_at(movie, 100), movie.scene.render,
+                                     movie.scene.effects, nullptr)
+                            .image;
+    for (auto _ : state) benchmark::DoNotOptimize(to_yuv420p(image).data());
+    state.SetBytesProcessed(state.iterations() * std::int64_t(image.rgb.size()));
+}
+BENCHMARK(BM_ToYuv420p)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace fh
