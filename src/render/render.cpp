@@ -48,13 +48,23 @@ void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1
             const ColorLanes<T> c = clamp_samples(
                 shader.trace(camera.generate(px, splat(T(y) + T(0.5))), active, counts, visible), active,
                 counts);
-            alignas(64) T rgb[3][W];
-            store(rgb[0], c.x);
-            store(rgb[1], c.y);
-            store(rgb[2], c.z);
             std::uint8_t* out = image.pixel(x, y);
-            for (int i = 0; i < n; ++i)
-                for (int k = 0; k < 3; ++k) out[3 * i + k] = to_byte(double(rgb[k][i]));
+            if constexpr (std::is_same_v<T, double>) {
+                // In [0, 255]: floor(v + 0.5) is the truncation, one vector
+                // conversion per channel. (Float rounds v + 0.5 itself.)
+                const LaneInts<T> bytes[3] = {__builtin_convertvector(c.x + T(0.5), LaneInts<T>),
+                                              __builtin_convertvector(c.y + T(0.5), LaneInts<T>),
+                                              __builtin_convertvector(c.z + T(0.5), LaneInts<T>)};
+                for (int i = 0; i < n; ++i)
+                    for (int k = 0; k < 3; ++k) out[3 * i + k] = std::uint8_t(bytes[k][i]);
+            } else {
+                alignas(64) T rgb[3][W];
+                store(rgb[0], c.x);
+                store(rgb[1], c.y);
+                store(rgb[2], c.z);
+                for (int i = 0; i < n; ++i)
+                    for (int k = 0; k < 3; ++k) out[3 * i + k] = to_byte(double(rgb[k][i]));
+            }
         }
     }
 }
