@@ -42,7 +42,8 @@ struct Sphere {
         const Lanes<T> disc = discriminant(ray, f, b);
         // No ray of the packet meets the sphere: skip the square root and the
         // division. (Most packets, for most spheres.)
-        if (none((disc >= T(0)) & (t_max > t_min))) return splat(kInfinity<T>);
+        const LaneMask<T> meets = (disc >= T(0)) & (t_max > t_min);
+        if (none(meets)) return splat(kInfinity<T>);
         const T r2 = radius * radius;
         // c = |f|^2 - r^2 is zero, as far as the arithmetic and the origin's own
         // coordinates can tell, for an origin on the sphere: then exactly 0.
@@ -51,6 +52,11 @@ struct Sphere {
         const T eps = std::numeric_limits<T>::epsilon();
         const Lanes<T> c_error = T(4) * eps * (f2 + r2 + radius * max_abs_component(ray.origin));
         const Lanes<T> c = select(abs(c_raw) <= c_error, splat(T(0)), c_raw);
+        // Both roots at or behind the origin (their sum 2b < 0, their product
+        // c >= 0): nothing ahead, as the formula below would find too. Every
+        // shadow and reflection ray leaving a sphere's surface is such a ray
+        // for that sphere: a packet of them skips the square root and division.
+        if (none(meets & ((b >= T(0)) | (c < T(0))))) return splat(kInfinity<T>);
         // q is the root of larger magnitude; the other is c / q (t0 t1 = c).
         // q == 0 only for a ray starting at a tangent point: c / q is then
         // NaN, every comparison below fails, and the ray misses.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "geometry/plane.h"
 #include "geometry/sphere.h"
@@ -20,6 +21,13 @@ TYPED_TEST_SUITE(Intersections, Scalars);
 template <typename T>
 Ray<T> ray(Vec3<T> o, Vec3<T> d) {
     return {o, glm::normalize(d)};
+}
+
+template <typename T>
+std::vector<T> lanes_of(const Lanes<T>& v) {
+    std::vector<T> out(kLanes<T>);
+    for (int i = 0; i < kLanes<T>; ++i) out[size_t(i)] = v[i];
+    return out;
 }
 
 TYPED_TEST(Intersections, SphereFrontHitAndNormal) {
@@ -62,6 +70,36 @@ TYPED_TEST(Intersections, SphereFromInsideTakesTheFarRoot) {
     using T = TypeParam;
     const Sphere<T> s{{0, 0, 0}, 2, 0};
     EXPECT_NEAR(s.intersect(ray<T>({0, 0, 0}, {1, 0, 0}), 0, kInfinity<T>), 2, 1e-6);
+}
+
+TYPED_TEST(Intersections, SpherePacketOfRaysLeavingItKeepsTheOneThatHits) {
+    // Rays leaving the sphere (both roots behind them) let a packet skip the
+    // root's square root -- but not a packet where one ray still hits.
+    using T = TypeParam;
+    const Sphere<T> s{{0, 0, 0}, 1, 0};
+    const T h = T(std::sqrt(0.5));
+    RayPacket<T> p = RayPacket<T>::splat(ray<T>({0, 0, 1}, {0, 0, 1}));  // leaving the top
+    for (int i = 0; i < kLanes<T>; ++i) {
+        const Ray<T> r = i % 3 == 0 ? ray<T>({h, 0, h}, {1, 0, 1})    // leaving, on the surface
+                         : i % 3 == 1 ? ray<T>({0, 0, 3}, {0, 1, 2})  // outside, sphere behind
+                                      : ray<T>({0, -1, 0}, {0, -1, 0});
+        p.origin.x[i] = r.origin.x, p.origin.y[i] = r.origin.y, p.origin.z[i] = r.origin.z;
+        p.direction.x[i] = r.direction.x, p.direction.y[i] = r.direction.y, p.direction.z[i] = r.direction.z;
+    }
+    for (const T t : lanes_of<T>(s.intersect(p, 0, splat(kInfinity<T>)))) EXPECT_EQ(t, kInfinity<T>);
+    // The last lane now comes from below, toward the bottom at z = -1.
+    const int last = kLanes<T> - 1;
+    p.origin.x[last] = 0, p.origin.y[last] = 0, p.origin.z[last] = -4;
+    p.direction.x[last] = 0, p.direction.y[last] = 0, p.direction.z[last] = 1;
+    const auto t = lanes_of<T>(s.intersect(p, 0, splat(kInfinity<T>)));
+    for (int i = 0; i < last; ++i) EXPECT_EQ(t[size_t(i)], kInfinity<T>) << i;
+    EXPECT_NEAR(t[size_t(last)], 3, 1e-6);
+    // Or from inside, past the centre: its closest approach is behind it too
+    // (b < 0), but it starts inside (c < 0) and meets the far side at t = 0.5.
+    p.origin.z[last] = T(0.5);
+    const auto inside = lanes_of<T>(s.intersect(p, 0, splat(kInfinity<T>)));
+    for (int i = 0; i < last; ++i) EXPECT_EQ(inside[size_t(i)], kInfinity<T>) << i;
+    EXPECT_NEAR(inside[size_t(last)], 0.5, 1e-6);
 }
 
 TYPED_TEST(Intersections, PlaneHitsFromAboveAndBelow) {
