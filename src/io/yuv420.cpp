@@ -38,6 +38,7 @@ std::vector<std::uint8_t> to_yuv420p(const Image& image) {
     std::uint8_t* y_plane = out.data();
     std::uint8_t* u_plane = y_plane + size_t(w) * size_t(h);
     std::uint8_t* v_plane = u_plane + size_t(cw) * size_t(ch);
+    if (w == 0 || h == 0) return out;
 
     for (size_t i = 0, n = size_t(w) * size_t(h); i < n; ++i) {
         const std::uint8_t* p = &image.rgb[3 * i];

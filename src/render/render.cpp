@@ -51,7 +51,8 @@ void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1
             std::uint8_t* out = image.pixel(x, y);
             if constexpr (std::is_same_v<T, double>) {
                 // In [0, 255]: floor(v + 0.5) is the truncation, one vector
-                // conversion per channel. (Float rounds v + 0.5 itself.)
+                // conversion per channel. (In float, v + 0.5 would round
+                // before the truncation: that path adds in double.)
                 const LaneInts<T> bytes[3] = {__builtin_convertvector(c.x + T(0.5), LaneInts<T>),
                                               __builtin_convertvector(c.y + T(0.5), LaneInts<T>),
                                               __builtin_convertvector(c.z + T(0.5), LaneInts<T>)};

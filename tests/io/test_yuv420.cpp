@@ -72,6 +72,11 @@ TEST(Yuv420, ChromaIsTheMeanOfEach2x2BlockAndOddSidesRepeatTheEdge) {
     for (int i : {14, 15, 16}) EXPECT_EQ(out[size_t(i)], 110) << i;   // blue's Cr
 }
 
+TEST(Yuv420, AnEmptyImageIsEmptyPlanes) {
+    EXPECT_TRUE(to_yuv420p(Image(0, 0)).empty());
+    EXPECT_EQ(to_yuv420p(Image(0, 3)).size(), 0u);
+}
+
 // ffmpeg's rgb24 -> yuv420p conversion of `rgb` (w x h).
 std::string ffmpeg_yuv(const std::vector<std::uint8_t>& rgb, int w, int h, const std::string& name) {
     const auto dir = fresh_dir(name);
