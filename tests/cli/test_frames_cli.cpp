@@ -130,7 +130,7 @@ TEST(FramesCli, RawVideoErrors) {
               "firsthit: error: --raw-video streams whole runs of frames: not with --shard or --resume\n");
     EXPECT_EQ(run_firsthit(frames(dir, "--stats --raw-video -" + out)).err,
               "firsthit: error: --raw-video - writes frames to standard output: not with --stats\n");
-    EXPECT_EQ(run_firsthit(frames(dir, "--raw-video x.raw --raw-pix-fmt yuv444p" + out)).err,
+    EXPECT_EQ(run_firsthit(frames(dir, "--raw-video " + (dir / "x.raw").string() + " --raw-pix-fmt yuv444p" + out)).err,
               "firsthit: error: --raw-pix-fmt: unknown raw pixel format 'yuv444p' (rgb24 or yuv420p)\n");
     EXPECT_EQ(run_firsthit(frames(dir, "--raw-pix-fmt yuv420p" + out)).err,
               "firsthit: error: --raw-pix-fmt goes with --raw-video\n");
