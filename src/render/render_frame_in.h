@@ -1,0 +1,210 @@
+// render_frame (render/render.h) in one scalar type: the tiles, the packets
+// of camera rays, the pixels. Only render.cpp (double) and render_float.cpp
+// (float) include this, each compiling one precision's shader variants --
+// the project's longest compile, split over two files so that two cores
+// share it.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+
+#include "render/adaptive.h"
+#include "render/render.h"
+#include "render/sampler.h"
+#include "render/shading.h"
+#include "render/tile_culling.h"
+
+namespace fh {
+
+template <typename T>
+FrameResult render_frame_in(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                            const Effects& effects, ThreadPool* pool);
+extern template FrameResult render_frame_in<float>(const Scene&, const Camera&, const RenderSettings&,
+                                                   const Effects&, ThreadPool*);
+extern template FrameResult render_frame_in<double>(const Scene&, const Camera&, const RenderSettings&,
+                                                    const Effects&, ThreadPool*);
+
+namespace detail {
+
+inline std::uint8_t to_byte(double v) { return std::uint8_t(std::floor(v + 0.5)); }
+
+// The clamped colour of each sample (SPEC section 4), lane by lane; a sample
+// that came out NaN or infinite is counted and contributes black.
+template <typename T>
+FH_HOT_INLINE ColorLanes<T> clamp_samples(const ColorLanes<T>& c, const LaneMask<T>& active,
+                                          RayCounts& counts) {
+    const LaneMask<T> ok = finite(c.x) & finite(c.y) & finite(c.z);
+    counts.nonfinite_samples += std::uint64_t(fh::count(active & ~ok));
+    auto clamp = [&ok](const Lanes<T>& v) FH_HOT_LAMBDA {
+        return select(ok, min(max(v, splat(T(0))), splat(T(255))), splat(T(0)));
+    };
+    return {clamp(c.x), clamp(c.y), clamp(c.z)};
+}
+
+// One sample through each pixel's centre, for the pixels [x0, x1) x [y0, y1):
+// a packet is up to W neighbouring pixels of a row, and their colours go
+// straight into the image.
+template <typename T, typename S>
+void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1, int y0, int y1,
+                    const PrimitiveSubset* visible, Image& image, RayCounts& counts) {
+    constexpr int W = kLanes<T>;
+    Lanes<T> lane;
+    for (int i = 0; i < W; ++i) lane[i] = T(i);
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; x += W) {
+            const int n = std::min(W, x1 - x);
+            // Lanes past the row's end repeat its last pixel, inactive.
+            const Lanes<T> px = min(T(x) + lane, splat(T(x + n - 1))) + T(0.5);
+            const LaneMask<T> active = first_lanes<T>(n);
+            counts.primary += std::uint64_t(n);
+            const ColorLanes<T> c = clamp_samples(
+                shader.trace(camera.generate(px, splat(T(y) + T(0.5))), active, counts, visible), active,
+                counts);
+            std::uint8_t* out = image.pixel(x, y);
+            if constexpr (std::is_same_v<T, double>) {
+                // In [0, 255]: floor(v + 0.5) is the truncation, one vector
+                // conversion per channel. (In float, v + 0.5 would round
+                // before the truncation: that path adds in double.)
+                const LaneInts<T> bytes[3] = {__builtin_convertvector(c.x + T(0.5), LaneInts<T>),
+                                              __builtin_convertvector(c.y + T(0.5), LaneInts<T>),
+                                              __builtin_convertvector(c.z + T(0.5), LaneInts<T>)};
+                for (int i = 0; i < n; ++i)
+                    for (int k = 0; k < 3; ++k) out[3 * i + k] = std::uint8_t(bytes[k][i]);
+            } else {
+                alignas(64) T rgb[3][W];
+                store(rgb[0], c.x);
+                store(rgb[1], c.y);
+                store(rgb[2], c.z);
+                for (int i = 0; i < n; ++i)
+                    for (int k = 0; k < 3; ++k) out[3 * i + k] = to_byte(double(rgb[k][i]));
+            }
+        }
+    }
+}
+
+// spp samples in each pixel of a list (at most kTileSize^2 of them; a tile's
+// or the adaptive pass's), a packet of samples at a time in pixel order; the
+// pixel is the mean of its clamped samples, rounded. visible: what the
+// samples' camera rays can hit (nullptr: anything).
+template <typename T, typename S>
+void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef* pixels, int count,
+                   int spp, const PrimitiveSubset* visible, Image& image, RayCounts& counts) {
+    constexpr int W = kLanes<T>;
+    const StrataGrid grid = strata_for(spp);
+    alignas(64) double sum[3][kTileSize * kTileSize];
+    for (auto& channel : sum) std::fill_n(channel, count, 0.0);
+    int pixel = 0, sample = 0;  // the next sample to take
+    const int samples = count * spp;
+    for (int first = 0; first < samples; first += W) {
+        const int n = std::min(W, samples - first);
+        alignas(64) T sx[W], sy[W];
+        int pixel_of[W];
+        for (int i = 0; i < W; ++i) {
+            if (i < n) {
+                const PixelRef px = pixels[pixel];
+                const SampleOffset o = sample_offset(px.x, px.y, sample, grid);
+                sx[i] = T(px.x + o.x);
+                sy[i] = T(px.y + o.y);
+                pixel_of[i] = pixel;
+                if (++sample == spp) sample = 0, ++pixel;
+            } else {  // past the last sample: a copy of it, in an inactive lane
+                sx[i] = sx[i - 1];
+                sy[i] = sy[i - 1];
+            }
+        }
+        const LaneMask<T> active = first_lanes<T>(n);
+        counts.primary += std::uint64_t(n);
+        const ColorLanes<T> c = clamp_samples(
+            shader.trace(camera.generate(load(sx), load(sy)), active, counts, visible), active, counts);
+        alignas(64) T rgb[3][W];
+        store(rgb[0], c.x);
+        store(rgb[1], c.y);
+        store(rgb[2], c.z);
+        for (int i = 0; i < n; ++i)
+            for (int k = 0; k < 3; ++k) sum[k][pixel_of[i]] += double(rgb[k][i]);
+    }
+    for (int p = 0; p < count; ++p) {
+        std::uint8_t* px = image.pixel(pixels[p].x, pixels[p].y);
+        for (int k = 0; k < 3; ++k) px[k] = to_byte(sum[k][p] / double(spp));
+    }
+}
+
+// The pixels of tile t, in row order.
+inline int tile_pixels(int t, int width, int height, PixelRef* out) {
+    const int tiles_x = (width + kTileSize - 1) / kTileSize;
+    const int x0 = (t % tiles_x) * kTileSize, y0 = (t / tiles_x) * kTileSize;
+    int n = 0;
+    for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
+        for (int x = x0; x < std::min(x0 + kTileSize, width); ++x)
+            out[n++] = {std::uint16_t(x), std::uint16_t(y)};
+    return n;
+}
+
+}  // namespace detail
+
+template <typename T>
+FrameResult render_frame_in(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                            const Effects& effects, ThreadPool* pool) {
+    using namespace detail;
+    const auto start = std::chrono::steady_clock::now();
+    const FlatScene<T> flat = FlatScene<T>::build(
+        scene, plan_effects(scene, effects, settings.max_depth, settings.prune));
+    const CameraRays<T> camera_rays(camera);
+    FrameResult result;
+    result.image = Image(camera.width, camera.height);
+    result.plan = flat.plan;
+
+    // One counter block per worker, a cache line apart so they do not share one.
+    struct alignas(64) PaddedCounts {
+        RayCounts c;
+    };
+    const size_t workers = static_cast<size_t>(pool ? pool->size() : 1);
+    std::vector<PaddedCounts> counts(workers);
+    // Each tile's camera rays hit only what its frustum reaches (computed in
+    // double: render/tile_culling.h); per worker, reused from tile to tile.
+    const CameraRays<double> frustum_rays(camera);
+    std::vector<PrimitiveSubset> subsets(workers);
+    auto run = [&](int tasks, const std::function<void(int, int)>& fn) {
+        if (pool) pool->parallel_for(tasks, fn);
+        else for (int t = 0; t < tasks; ++t) fn(t, 0);
+    };
+    constexpr int kChunk = kTileSize * kTileSize;
+    with_shader(flat, [&](const auto& shader) {
+        const int tiles = ((camera.width + kTileSize - 1) / kTileSize) *
+                          ((camera.height + kTileSize - 1) / kTileSize);
+        const int tiles_x = (camera.width + kTileSize - 1) / kTileSize;
+        run(tiles, [&](int t, int worker) {
+            RayCounts& c = counts[size_t(worker)].c;
+            const int x0 = (t % tiles_x) * kTileSize, y0 = (t / tiles_x) * kTileSize;
+            const int x1 = std::min(x0 + kTileSize, camera.width), y1 = std::min(y0 + kTileSize, camera.height);
+            PrimitiveSubset& visible = subsets[size_t(worker)];
+            cull_to_frustum(flat, TileFrustum(frustum_rays, x0, x1, y0, y1), visible);
+            if (settings.samples_per_pixel == 1) {
+                render_centres<T>(shader, camera_rays, x0, x1, y0, y1, &visible, result.image, c);
+                return;
+            }
+            PixelRef pixels[kChunk];
+            const int n = tile_pixels(t, camera.width, camera.height, pixels);
+            render_pixels<T>(shader, camera_rays, pixels, n, settings.samples_per_pixel, &visible,
+                             result.image, c);
+        });
+        if (!settings.adaptive) return;
+        const std::vector<PixelRef> refine =
+            pixels_to_refine(result.image, settings.adaptive_threshold);
+        result.refined_pixels = refine.size();
+        const int chunks = int((refine.size() + kChunk - 1) / kChunk);
+        run(chunks, [&](int c, int worker) {
+            const int n = std::min(kChunk, int(refine.size()) - c * kChunk);
+            render_pixels<T>(shader, camera_rays, refine.data() + c * kChunk, n,
+                             settings.adaptive_samples, nullptr, result.image, counts[size_t(worker)].c);
+        });
+    });
+    for (const auto& c : counts) result.counts += c.c;
+    result.render_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace fh
