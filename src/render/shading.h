@@ -5,7 +5,7 @@
 //        Lambert diffuse and Blinn-Phong specular (specular only where n.l > 0)
 //   6. glazing: + reflectivity * colour of the mirrored ray, lit or not,
 //      up to max_depth reflection rays in a chain.
-// Colours stay unclamped here; the pixel clamps (render/render.cpp).
+// Colours stay unclamped here; the pixel clamps (render/render_frame_in.h).
 //
 // A packet of rays goes through these steps together, each step one SIMD
 // formula over its lanes, with a mask of the rays still in play: the shadow
