@@ -4,19 +4,14 @@
 //   build/bench/firsthit_bench --benchmark_filter=Png
 #include <benchmark/benchmark.h>
 
-#include "anim/movie.h"
-#include "io/movie_loader.h"
 #include "io/png_writer.h"
-#include "render/render.h"
+#include "report_frame.h"
 
 namespace fh {
 namespace {
 
 void BM_EncodePng(benchmark::State& state) {
-    const Movie movie = load_movie(FIRSTHIT_SOURCE_DIR "/animations/movie1.yaml");
-    const Image image = render_frame(movie.scene, camera_at(movie, 100), movie.scene.render,
-                                     movie.scene.effects, nullptr)
-                            .image;
+    const Image& image = report_frame();
     size_t bytes = 0;
     for (auto _ : state) bytes = encode_png(image).size();
     state.SetBytesProcessed(state.iterations() * std::int64_t(image.rgb.size()));

@@ -26,7 +26,7 @@ Ray<T> ray(Vec3<T> o, Vec3<T> d) {
 template <typename T>
 std::vector<T> lanes_of(const Lanes<T>& v) {
     std::vector<T> out(kLanes<T>);
-    for (int i = 0; i < kLanes<T>; ++i) out[size_t(i)] = v[i];
+    store(out.data(), v);
     return out;
 }
 
