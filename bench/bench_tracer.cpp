@@ -16,7 +16,7 @@ namespace fh {
 namespace {
 
 const Scene& report_scene() {
-    static const Scene s = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml");
+    static const Scene s = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml").scene;
     return s;
 }
 
@@ -108,7 +108,7 @@ void BM_Triangle(benchmark::State& state) {
 template <typename T>
 void BM_ClosestHits(benchmark::State& state) {
     const Scene& s = report_scene();
-    const auto flat = FlatScene<T>::build(s, plan_effects(s, s.effects, 5));
+    const auto flat = FlatScene<T>::build(s, plan_effects(s, Effects{}, 5));
     const auto rays = camera_tile<T>(int(state.range(0)), int(state.range(1)));
     for (auto _ : state)
         for (const RayPacket<T>& p : rays)
@@ -121,7 +121,7 @@ void BM_ClosestHits(benchmark::State& state) {
 template <typename T>
 void BM_ShadeTile(benchmark::State& state) {
     const Scene& s = report_scene();
-    const auto flat = FlatScene<T>::build(s, plan_effects(s, s.effects, 5));
+    const auto flat = FlatScene<T>::build(s, plan_effects(s, Effects{}, 5));
     const auto rays = camera_tile<T>(int(state.range(0)), int(state.range(1)));
     RayCounts counts;
     with_shader(flat, [&](const auto& shader) {

@@ -11,7 +11,7 @@ namespace fh {
 inline const Image& report_frame() {
     static const Image image = [] {
         const Movie movie = load_movie(FIRSTHIT_SOURCE_DIR "/animations/movie1.yaml");
-        return render_frame(movie.scene, camera_at(movie, 100), movie.scene.render, movie.scene.effects, nullptr)
+        return render_frame(movie.scene, camera_at(movie, 100), movie.settings, nullptr)
             .image;
     }();
     return image;

@@ -32,12 +32,12 @@ inline void check_message(const InputError& e) {
 
 // Renders the camera at 4 x 4 with at most 2 samples and depth 3: every
 // accepted value goes through the tracer once.
-inline void render_tiny(const Scene& scene, Camera camera, RenderSettings settings, const Effects& effects) {
+inline void render_tiny(const Scene& scene, Camera camera, RenderSettings settings) {
     camera.width = 4;
     camera.height = 4;
     settings.samples_per_pixel = std::min(settings.samples_per_pixel, 2);
     settings.max_depth = std::min(settings.max_depth, 3);
-    const FrameResult r = render_frame(scene, camera, settings, effects, nullptr);
+    const FrameResult r = render_frame(scene, camera, settings, nullptr);
     if (r.image.rgb.size() != 4u * 4u * 3u) std::abort();
 }
 

@@ -79,6 +79,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const int frame : {0, n / 3, n / 2, n - 1}) (void)fh::camera_at(movie, frame);
     const fh::Camera cam = fh::camera_at(movie, 0);
     if (fh::is_finite(cam.look_at) && fh::max_abs_component(cam.look_at) > 0)
-        fh::fuzz::render_tiny(movie.scene, cam, movie.scene.render, movie.scene.effects);
+        fh::fuzz::render_tiny(movie.scene, cam, movie.settings);
     return 0;
 }

@@ -8,15 +8,14 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
-    fh::Scene scene;
+    fh::SceneFile file;
     try {
-        scene = fh::load_scene_from_string(text, "fuzz_scene.yaml");
+        file = fh::load_scene_from_string(text, "fuzz_scene.yaml");
     } catch (const fh::InputError& e) {
         fh::fuzz::check_message(e);
         return 0;
     }
     // Any other exception escapes and is reported as a crash.
-    for (const fh::Camera& camera : scene.cameras)
-        fh::fuzz::render_tiny(scene, camera, scene.render, scene.effects);
+    for (const fh::Camera& camera : file.scene.cameras) fh::fuzz::render_tiny(file.scene, camera, file.settings);
     return 0;
 }

@@ -7,12 +7,14 @@
 #include <vector>
 
 #include "anim/path.h"
+#include "render/settings.h"
 #include "scene/scene.h"
 
 namespace fh {
 
 struct Movie {
-    Scene scene;   // the movie's lights, render settings and effects already applied
+    Scene scene;               // the movie's lights already applied
+    RenderSettings settings;   // the scene file's, with the movie's `render:` and `effects:` on top
     Camera camera; // the base camera; animated properties replace its values
     double fps = 30;
     double seconds = 10;

@@ -113,18 +113,18 @@ int run_accuracy(const Words& words) {
     spec.insert(spec.end(), {{"--csv"}, {"--plot"}, {"--runs"}, {"--threads"}, {"--reference-spp"},
                              {"--max-spp"}});
     const Args args = Args::parse("accuracy", words, spec);
-    const RenderJob job = load_job(args);
+    const Job job = load_job_from(args);
     const int runs = args.integer("--runs", 3, 1, 1000);
     const int ref_spp = args.integer("--reference-spp", 256, 1, Limits::max_samples_per_pixel);
     const int max_spp = args.integer("--max-spp", 64, 1, Limits::max_samples_per_pixel);
     ThreadPool pool(args.integer("--threads", 0, 0, 1024));
     auto render = [&](const RenderSettings& s) {
-        return render_frame(job.scene, job.camera, s, job.effects, &pool);
+        return render_frame(job.scene(), job.camera, s, &pool);
     };
 
     // The reference: deep enough that one more level of glazing changes nothing.
-    RenderSettings ref = job.settings;
-    ref.precision = Precision::dual;
+    RenderSettings ref = job.settings();
+    ref.precision = Precision::float64;
     ref.adaptive = false;
     ref.samples_per_pixel = 1;
     ref.max_depth = 16;
@@ -158,9 +158,9 @@ int run_accuracy(const Words& words) {
                         sampling ? error : compare_images(r.image, one_sample.image)});
         if (tty) std::cerr << "\raccuracy: " << rows.size() - 1 << " settings measured" << std::flush;
     };
-    RenderSettings base = job.settings;
+    RenderSettings base = job.settings();
     base.adaptive = false;
-    base.precision = Precision::dual;
+    base.precision = Precision::float64;
     base.samples_per_pixel = 1;
     for (int spp = 1; spp <= max_spp; spp *= 2) {
         RenderSettings s = base;
@@ -178,7 +178,7 @@ int run_accuracy(const Words& words) {
         s.max_depth = depth;
         measure("depth", s);
     }
-    for (Precision p : {Precision::single, Precision::dual}) {
+    for (Precision p : {Precision::float32, Precision::float64}) {
         RenderSettings s = base;
         s.precision = p;
         measure("precision", s);

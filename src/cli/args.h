@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "io/yaml_reader.h"  // closest_match
+#include "io/closest_match.h"
 
 namespace fh {
 

@@ -28,14 +28,14 @@ int run_bench(const Words& words) {
     auto spec = job_flags();
     spec.insert(spec.end(), {{"--threads"}, {"--runs"}});
     const Args args = Args::parse("bench", words, spec);
-    const RenderJob job = load_job(args);
+    const Job job = load_job_from(args);
     const int runs = args.integer("--runs", 7, 1, 10000);
     ThreadPool pool(args.integer("--threads", 0, 0, 1024));
 
-    FrameResult r = render_frame(job.scene, job.camera, job.settings, job.effects, &pool);  // warm-up
+    FrameResult r = render_frame(job.scene(), job.camera, job.settings(), &pool);  // warm-up
     std::vector<double> ms;
     for (int i = 0; i < runs; ++i) {
-        r = render_frame(job.scene, job.camera, job.settings, job.effects, &pool);
+        r = render_frame(job.scene(), job.camera, job.settings(), &pool);
         ms.push_back(r.render_ms);
     }
     const double ms_median = median(ms);
@@ -44,7 +44,7 @@ int run_bench(const Words& words) {
     if (job.frame >= 0) std::cout << "frame: " << job.frame << "\n";
     std::cout << "width: " << job.camera.width << "\n"
               << "height: " << job.camera.height << "\n"
-              << "precision: " << precision_name(job.settings.precision) << "\n"
+              << "precision: " << precision_name(job.settings().precision) << "\n"
               << "threads: " << pool.size() << "\n"
               << "runs: " << runs << "\n"
               << "ms_per_frame: " << ms_median << "\n"

@@ -1,30 +1,22 @@
 // firsthit frames MOVIE: every frame of a movie (or a range or shard of them)
-// to DIR/frame_NNNN.png. Frames are spread over the pool one per worker: each
-// worker renders its frame on its own and encodes the PNG, so PNG encoding
-// runs beside rendering instead of stalling it.
-#include <atomic>
-#include <chrono>
-#include <cstdlib>
+// to DIR/frame_NNNN.png, through the frame pipeline (pipeline/frame_pipeline.h).
 #include <filesystem>
 #include <iostream>
-#include <mutex>
 #include <optional>
-#include <shared_mutex>
 
 #include <unistd.h>
 
 #include "anim/frame_selection.h"
-#include "anim/movie.h"
+#include "cli/cluster_shard.h"
 #include "cli/commands.h"
-#include "cli/interrupt.h"
 #include "cli/job.h"
 #include "cli/progress.h"
 #include "cli/stats_output.h"
 #include "io/input_error.h"
 #include "io/movie_loader.h"
-#include "io/png_writer.h"
-#include "io/raw_video_writer.h"
 #include "io/scene_loader.h"
+#include "pipeline/frame_pipeline.h"
+#include "pipeline/job.h"
 
 namespace fh {
 
@@ -72,9 +64,48 @@ of dead runs are removed by the next run.
 )";
 
 namespace {
-// How long frames in flight may take after SIGINT/SIGTERM before the run
-// abandons them and exits.
-constexpr std::chrono::milliseconds kInterruptGrace{500};
+
+// The progress line, and the words for an interrupted run.
+class FramesProgress : public FramesObserver {
+public:
+    FramesProgress(std::string folder, bool show) : folder_(std::move(folder)), show_(show) {}
+
+    void removed_temporaries(int count) override {
+        std::cerr << "firsthit: removed " << count << " temporary file(s) left by an interrupted run in "
+                  << folder_ << "\n";
+    }
+    void starting(int frames) override { progress_.emplace(frames, show_); }
+    void frame_done(int) override { progress_->frame_done(); }
+    void abandoning(int done, int total) override {
+        progress_->finish();
+        std::cerr << "firsthit: interrupted after " << done << " of " << total
+                  << " frames (frames in flight abandoned); run again with --resume to render the rest\n";
+    }
+    void finish() {
+        if (progress_) progress_->finish();
+    }
+
+private:
+    std::string folder_;
+    bool show_;
+    std::optional<Progress> progress_;
+};
+
+// --range and --shard (or --shard auto) as the frames of an n-frame movie.
+std::vector<int> selected_frames(const Args& args, int n) {
+    // --shards N: the count for --shard auto in a Kubernetes Indexed Job.
+    const auto shards = args.has("--shards") ? std::optional(args.integer("--shards", 1, 1, 1'000'000)) : std::nullopt;
+    if (shards && !args.has("--shard")) throw UsageError("--shards N goes with --shard auto");
+    try {
+        const auto range = args.value("--range");
+        const auto shard = args.value("--shard");
+        return select_frames(n, range ? std::optional(parse_range(*range)) : std::nullopt,
+                             shard ? std::optional(parse_shard_option(*shard, shards)) : std::nullopt);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+}
+
 }  // namespace
 
 int run_frames(const Words& words) {
@@ -93,112 +124,47 @@ int run_frames(const Words& words) {
         load_scene(file);
         throw UsageError(file + " is not a movie file (a movie file has a 'scene:' key)");
     }
-    Movie movie = load_movie(file);
-    const int n = movie.frame_count();
+    const Job job = load_job({file, std::nullopt, std::nullopt});
 
-    std::vector<int> frames;
-    // --shards N: the count for --shard auto in a Kubernetes Indexed Job (issue 10).
-    const auto shards = args.has("--shards") ? std::optional(args.integer("--shards", 1, 1, 1'000'000)) : std::nullopt;
-    if (shards && !args.has("--shard")) throw UsageError("--shards N goes with --shard auto");
-    try {
-        frames = select_frames(n, args.has("--range") ? std::optional(parse_range(*args.value("--range")))
-                                                      : std::nullopt,
-                               args.has("--shard") ? std::optional(parse_shard_option(*args.value("--shard"), shards))
-                                                   : std::nullopt);
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(e.what());
-    }
-    try {
-        warn_parallel_up(file, check_camera_path(movie));
-    } catch (const std::invalid_argument& e) {
-        throw InputError(file, e.what());
-    }
-    RenderSettings settings = movie.scene.render;
+    FramesRequest request;
+    request.frames = selected_frames(args, job.movie.frame_count());
+    print_warnings(job);
+    RenderSettings settings = job.movie.settings;
     apply_quality_flags(args, settings);
-    const int threads = args.integer("--threads", 0, 0, 1024);
-
-    namespace fs = std::filesystem;
-    const fs::path out =
-        args.value("--out").value_or((fs::path("output") / fs::path(file).stem()).string());
-    prepare_output_folder(out.string());
-    if (const int removed = remove_stale_temporaries(out.string()))
-        std::cerr << "firsthit: removed " << removed << " temporary file(s) left by an interrupted run in "
-                  << out.string() << "\n";
-
-    // The stream is the movie's frames in order: all of them, or a range.
-    std::optional<RawVideoWriter> raw_video;
+    request.threads = args.integer("--threads", 0, 0, 1024);
+    request.folder = args.value("--out").value_or((std::filesystem::path("output") / std::filesystem::path(file).stem()).string());
+    request.resume = args.has("--resume");
     if (const auto raw = args.value("--raw-video")) {
         if (args.has("--shard") || args.has("--resume"))
             throw UsageError("--raw-video streams whole runs of frames: not with --shard or --resume");
         if (*raw == "-" && args.has("--stats"))
             throw UsageError("--raw-video - writes frames to standard output: not with --stats");
-        RawPixelFormat format = RawPixelFormat::rgb24;
         try {
-            if (const auto name = args.value("--raw-pix-fmt")) format = parse_raw_pixel_format(*name);
+            if (const auto name = args.value("--raw-pix-fmt")) request.raw_pixel_format = parse_raw_pixel_format(*name);
         } catch (const std::invalid_argument& e) {
             throw UsageError(std::string("--raw-pix-fmt: ") + e.what());
         }
-        raw_video.emplace(*raw, 8, format);
+        request.raw_video = *raw;
     } else if (args.has("--raw-pix-fmt")) {
         throw UsageError("--raw-pix-fmt goes with --raw-video");
     }
-    if (args.has("--resume"))
-        std::erase_if(frames, [&](int i) { return is_complete_png((out / frame_file_name(i, n)).string()); });
 
-    Progress progress(int(frames.size()), !args.has("--quiet") && isatty(STDERR_FILENO));
-    // Frames are written under a shared lock; the interrupt watch takes it
-    // alone before ending the process, so no file is half written then.
-    std::shared_mutex write_mutex;
-    std::atomic<bool> finished{false};
-    const InterruptWatch watch(kInterruptGrace, [&](int sig) {
-        std::unique_lock lock(write_mutex);
-        if (finished) return;  // the run ended meanwhile: it reports itself
-        progress.finish();
-        std::cerr << "firsthit: interrupted after " << progress.done() << " of " << frames.size()
-                  << " frames (frames in flight abandoned); run again with --resume to render the rest\n";
-        std::_Exit(128 + sig);
-    });
-    ThreadPool pool(threads);
-    std::mutex counts_mutex;
-    RayCounts counts;
-    pool.parallel_for(int(frames.size()), [&](int task, int) {
-        if (interrupted()) return;
-        const int i = frames[size_t(task)];
-        FrameResult r;
-        try {
-            r = render_frame(movie.scene, camera_at(movie, i), settings, movie.scene.effects, nullptr);
-            {
-                std::shared_lock lock(write_mutex);
-                write_png((out / frame_file_name(i, n)).string(), r.image);
-            }
-            if (raw_video) raw_video->put(task, std::move(r.image));
-        } catch (const std::exception& e) {
-            if (raw_video) raw_video->fail(e.what());  // frames after this one wait for it
-            throw;
-        }
-        {
-            std::lock_guard lock(counts_mutex);
-            counts += r.counts;
-        }
-        progress.frame_done();
-    });
-    {
-        std::unique_lock lock(write_mutex);
-        finished = true;
-    }
+    FramesProgress progress(request.folder.string(), !args.has("--quiet") && isatty(STDERR_FILENO));
+    const FramesSummary run = render_frames(job.movie, settings, request, progress);
     progress.finish();
-    if (interrupted()) {
-        std::cerr << "firsthit: interrupted after " << progress.done() << " of " << frames.size()
+    if (run.interrupt_signal) {
+        std::cerr << "firsthit: interrupted after " << run.rendered << " of " << run.to_render
                   << " frames; run again with --resume to render the rest\n";
-        return 128 + interrupt_signal();
+        return 128 + run.interrupt_signal;
     }
-    std::cerr << "rendered " << frames.size() << " frames in " << progress.seconds() << " s ("
-              << progress.fps() << " frames/s) into " << out.string() << "\n";
+    const double fps = run.seconds > 0 ? run.rendered / run.seconds : 0;
+    std::cerr << "rendered " << run.to_render << " frames in " << run.seconds << " s (" << fps
+              << " frames/s) into " << request.folder.string() << "\n";
     if (args.has("--stats")) {
-        std::cout << "frames: " << frames.size() << "\n"
-                  << "seconds: " << progress.seconds() << "\n"
-                  << "frames_per_second: " << progress.fps() << "\n";
-        print_counts(std::cout, counts);
+        std::cout << "frames: " << run.to_render << "\n"
+                  << "seconds: " << run.seconds << "\n"
+                  << "frames_per_second: " << fps << "\n";
+        print_counts(std::cout, run.counts);
     }
     return 0;
 }

@@ -21,7 +21,7 @@ lights and cameras.
 )";
 
 namespace {
-void print_scene(const Scene& s) {
+void print_scene(const Scene& s, const RenderSettings& settings) {
     std::cout << "materials: " << s.materials.size() << "\n"
               << "spheres: " << s.spheres.size() << "\n"
               << "planes: " << s.planes.size() << "\n"
@@ -32,9 +32,9 @@ void print_scene(const Scene& s) {
     for (const auto& l : s.spot_lights) std::cout << " " << l.name << (l.on ? "" : "(off)");
     std::cout << "\ncameras:";
     for (const auto& c : s.cameras) std::cout << " " << c.name;
-    std::cout << "\nsamples_per_pixel: " << s.render.samples_per_pixel << "\n"
-              << "max_depth: " << s.render.max_depth << "\n"
-              << "effects: " << s.effects.names() << "\n";
+    std::cout << "\nsamples_per_pixel: " << settings.samples_per_pixel << "\n"
+              << "max_depth: " << settings.max_depth << "\n"
+              << "effects: " << settings.effects.names() << "\n";
 }
 }  // namespace
 
@@ -53,11 +53,11 @@ int run_info(const Words& words) {
                   << "width: " << m.camera.width << "\n"
                   << "height: " << m.camera.height << "\n"
                   << "first_frame_file: " << frame_file_name(0, m.frame_count()) << "\n";
-        print_scene(m.scene);
+        print_scene(m.scene, m.settings);
     } else {
-        const Scene scene = load_scene(file);  // before printing: an error prints nothing else
+        const SceneFile scene = load_scene(file);  // before printing: an error prints nothing else
         std::cout << "kind: scene\n";
-        print_scene(scene);
+        print_scene(scene.scene, scene.settings);
     }
     return 0;
 }

@@ -1,35 +1,28 @@
-// What the render, bench and accuracy commands share: load FILE (a scene or a
-// movie), pick the camera (--camera, or the movie's camera at --frame), and
-// apply the quality flags on top of the file's settings.
+// The flags that pick what to render and how well (render, bench, accuracy,
+// view): FILE, --frame, --camera and the quality flags, turned into a loaded
+// Job (pipeline/job.h) and its settings.
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "cli/args.h"
+#include "pipeline/job.h"
 #include "render/settings.h"
-#include "scene/scene.h"
 
 namespace fh {
 
-struct RenderJob {
-    std::string file;
-    Scene scene;
-    Camera camera;
-    RenderSettings settings;
-    Effects effects;
-    int frame = -1;  // -1: a scene, not a movie
-};
-
-// The flags load_job reads.
+// The flags load_job_from reads.
 std::vector<FlagSpec> job_flags();
 
-RenderJob load_job(const Args& args);
+// One positional FILE, --camera and --frame: the loaded job (its warnings
+// printed to stderr), with the quality flags applied to job.movie.settings.
+Job load_job_from(const Args& args);
 
-// --spp, --depth, --precision and --no-prune on top of the file's settings.
+// --spp, --depth, --precision, --adaptive, --aa-* and --no-prune on top of
+// the file's settings.
 void apply_quality_flags(const Args& args, RenderSettings& settings);
 
-// Prints one warning line naming the frames whose camera used the fallback up.
-void warn_parallel_up(const std::string& file, const std::vector<int>& frames);
+// The job's warnings, one line each on stderr.
+void print_warnings(const Job& job);
 
 }  // namespace fh

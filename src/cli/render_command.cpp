@@ -5,7 +5,7 @@
 #include <mutex>
 
 #include "cli/commands.h"
-#include "cli/interrupt.h"
+#include "pipeline/interrupt.h"
 #include "cli/job.h"
 #include "cli/stats_output.h"
 #include "io/png_writer.h"
@@ -37,7 +37,7 @@ Renders one frame of a scene or movie file to a PNG.
 )";
 
 namespace {
-std::string default_output(const RenderJob& job) {
+std::string default_output(const Job& job) {
     std::string stem = std::filesystem::path(job.file).stem().string();
     if (job.frame >= 0) {
         std::string n = std::to_string(job.frame);
@@ -52,7 +52,7 @@ int run_render(const Words& words) {
     auto spec = job_flags();
     spec.insert(spec.end(), {{"--threads"}, {"--stats", false}, {"-o"}, {"--output"}});
     const Args args = Args::parse("render", words, spec);
-    const RenderJob job = load_job(args);
+    const Job job = load_job_from(args);
     const int threads = args.integer("--threads", 0, 0, 1024);
     std::string out = args.value("-o").value_or(args.value("--output").value_or(""));
     if (out.empty()) out = default_output(job);
@@ -72,7 +72,7 @@ int run_render(const Words& words) {
         std::_Exit(128 + sig);
     });
     ThreadPool pool(threads);
-    const FrameResult r = render_frame(job.scene, job.camera, job.settings, job.effects, &pool);
+    const FrameResult r = render_frame(job.scene(), job.camera, job.settings(), &pool);
     {
         const std::lock_guard lock(write_mutex);
         write_png(out, r.image);
@@ -84,8 +84,8 @@ int run_render(const Words& words) {
         std::cout << "camera: " << job.camera.name << "\n"
                   << "width: " << job.camera.width << "\n"
                   << "height: " << job.camera.height << "\n"
-                  << "samples_per_pixel: " << job.settings.samples_per_pixel << "\n"
-                  << "precision: " << precision_name(job.settings.precision) << "\n"
+                  << "samples_per_pixel: " << job.settings().samples_per_pixel << "\n"
+                  << "precision: " << precision_name(job.settings().precision) << "\n"
                   << "threads: " << pool.size() << "\n";
         print_plan(std::cout, r.plan);
         print_counts(std::cout, r.counts);

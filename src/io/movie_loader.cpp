@@ -159,15 +159,17 @@ Movie load_movie_text(const std::string* text, const std::string& path) {
         const MapReader m(r, text ? r.parse_map(*text, "movie") : r.load_map("movie"), "movie",
                           {"scene", "camera", "lights", "fps", "seconds", "animate", "render", "effects"});
         Movie movie;
-        movie.scene = load_scene(scene_path(r, m));
+        SceneFile scene_file = load_scene(scene_path(r, m));
+        movie.scene = std::move(scene_file.scene);
+        movie.settings = scene_file.settings;
         movie.camera = pick_camera(r, m, movie.scene);
         if (m.has("lights")) keep_only_lights(movie.scene, read_light_list(r, m.value("lights"), movie.scene));
         if (m.has("fps")) movie.fps = m.positive("fps");
         if (m.has("seconds")) movie.seconds = m.positive("seconds");
         check_frame_count(r, m, movie);
         read_animate(r, block(m, "animate"), movie);
-        read_render_settings(r, block(m, "render"), movie.scene.render);
-        if (m.has("effects")) movie.scene.effects = read_effects(r, m.value("effects"));
+        read_render_settings(r, block(m, "render"), movie.settings);
+        if (m.has("effects")) movie.settings.effects = read_effects(r, m.value("effects"));
         return movie;
     } catch (const YAML::Exception& e) {
         throw to_input_error(path, e);

@@ -1,45 +1,26 @@
-// PNG output. A file is written under a temporary name in the same folder,
-// flushed to disk (fsync) and renamed over the target, so a reader, a killed
-// run or a machine that loses power only ever sees a whole file or none.
-//
-// The temporary is NAME.tmp-HOST-PID-N (N counts the writes of the process).
-// It exists only while one encoded file is written, milliseconds; a run
-// killed in that moment leaves it behind, and remove_stale_temporaries
-// (called by `firsthit frames` on its output folder) cleans it up.
+// PNG output: an Image encoded as PNG, and written as a file that is whole
+// or absent (write_file_atomic, io/atomic_file.h).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+// For the callers, not this header: the commands that write PNGs also check
+// output places and remove stale temporaries, and include only png_writer.h.
+#include "io/atomic_file.h"
 #include "render/image.h"
 
 namespace fh {
 
 std::vector<std::uint8_t> encode_png(const Image& image);
 
-// Writes bytes to path atomically; throws std::runtime_error naming the path.
-void write_file_atomic(const std::string& path, const std::vector<std::uint8_t>& bytes);
+// The CRC-32 of PNG's chunks (ISO 3309), as encode_png computes it: zlib's
+// crc32(), through stb_image_write's STBIW_CRC32 hook.
+std::uint32_t png_crc32(const unsigned char* data, size_t len);
 
-// The temporary name write_file_atomic would use for `path` as write number
-// `n` of this process.
-std::string temporary_name(const std::string& path, unsigned n);
-
-// Removes the temporaries of write_file_atomic in `dir` that no live process
-// is writing: those of this machine whose process has ended (or whose PID is
-// this process's, which has not written there yet), and those of any machine
-// (a folder shared by a cluster) last modified more than `max_age_seconds`
-// ago. Returns how many it removed.
-int remove_stale_temporaries(const std::string& dir, double max_age_seconds = 600);
-
-// Bad output locations, found before any rendering: `path` is an existing
-// folder, or its folder does not exist or cannot be written. InputError
-// naming the path.
-void check_output_file(const std::string& path);
-// `dir` cannot be created, is not a folder, or cannot be written: InputError.
-// Creates it (and its parents) when missing.
-void prepare_output_folder(const std::string& dir);
-
+// encode_png, then write_file_atomic.
 void write_png(const std::string& path, const Image& image);
 
 // A PNG file that is whole: the signature, then chunks up to IEND at the end.

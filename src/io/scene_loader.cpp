@@ -175,8 +175,8 @@ void read_render_settings(const YamlReader& r, const YAML::Node& node, RenderSet
     if (m.has("max_depth")) settings.max_depth = m.integer("max_depth", 0, Limits::max_depth);
     if (m.has("precision"))
         settings.precision = r.choice(m.value("precision"), "precision", {"float", "double"}) == 0
-                                 ? Precision::single
-                                 : Precision::dual;
+                                 ? Precision::float32
+                                 : Precision::float64;
 }
 
 Effects read_effects(const YamlReader& r, const YAML::Node& node) {
@@ -191,20 +191,21 @@ Effects read_effects(const YamlReader& r, const YAML::Node& node) {
 namespace {
 
 // The scene in `text` (read from the file when it is null).
-Scene load_scene_text(const std::string* text, const std::string& path) {
+SceneFile load_scene_text(const std::string* text, const std::string& path) {
     try {
         const YamlReader r(path);
         const MapReader top(r, text ? r.parse_map(*text, "scene") : r.load_map("scene"), "scene",
                             {"materials", "surfaces", "lights", "cameras", "render", "effects"});
-        Scene scene;
+        SceneFile file;
+        Scene& scene = file.scene;
         // Materials first, whatever the file's order: surfaces refer to them.
         read_materials(r, block(top, "materials"), scene);
         read_surfaces(r, block(top, "surfaces"), scene);
         read_lights(r, block(top, "lights"), scene);
         read_cameras(r, top, scene);
-        read_render_settings(r, block(top, "render"), scene.render);
-        if (top.has("effects")) scene.effects = read_effects(r, top.value("effects"));
-        return scene;
+        read_render_settings(r, block(top, "render"), file.settings);
+        if (top.has("effects")) file.settings.effects = read_effects(r, top.value("effects"));
+        return file;
     } catch (const YAML::Exception& e) {
         throw to_input_error(path, e);
     }
@@ -212,9 +213,9 @@ Scene load_scene_text(const std::string* text, const std::string& path) {
 
 }  // namespace
 
-Scene load_scene(const std::string& path) { return load_scene_text(nullptr, path); }
+SceneFile load_scene(const std::string& path) { return load_scene_text(nullptr, path); }
 
-Scene load_scene_from_string(const std::string& text, const std::string& file) {
+SceneFile load_scene_from_string(const std::string& text, const std::string& file) {
     return load_scene_text(&text, file);
 }
 

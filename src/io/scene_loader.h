@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "render/settings.h"
 #include "scene/scene.h"
 
 namespace YAML {
@@ -19,12 +20,19 @@ class YamlReader;
 // Loads a scene file. Unreadable file, YAML syntax error or any bad value:
 // InputError. Normals and light directions come out unit length; a plane's
 // distance is rescaled with its normal so it stays the same plane.
-Scene load_scene(const std::string& path);
+// A scene file: the scene it describes and the render settings it asks for
+// (its `render:` and `effects:` blocks).
+struct SceneFile {
+    Scene scene;
+    RenderSettings settings;
+};
+
+SceneFile load_scene(const std::string& path);
 
 // The same from the file's text in memory; `file` only names it in errors
 // (the fuzzer and tests use this). The text gets the checks of a file's:
 // size, text encoding and nesting depth (io/yaml_reader.h).
-Scene load_scene_from_string(const std::string& text, const std::string& file);
+SceneFile load_scene_from_string(const std::string& text, const std::string& file);
 
 // The `render:` map (samples_per_pixel, max_depth, precision): each key given
 // replaces the value in `settings`, so a movie can override a scene's. A null

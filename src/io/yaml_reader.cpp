@@ -1,18 +1,11 @@
 #include "io/yaml_reader.h"
 
 #include <algorithm>
-#include <cctype>
-#include <cerrno>
 #include <charconv>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
-#include <filesystem>
-#include <cstdio>
 #include <sstream>
-
-#include <sys/stat.h>
 
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
@@ -59,38 +52,6 @@ std::string quoted_list(const std::vector<std::string>& options) {
         s += options[i];
     }
     return s;
-}
-
-std::string lowercase_first(std::string s) {
-    if (!s.empty()) s[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(s[0])));
-    return s;
-}
-
-std::string hex_byte(unsigned char c) {
-    static const char hex[] = "0123456789abcdef";
-    return std::string("0x") + hex[c >> 4] + hex[c & 15];
-}
-
-// The length of the valid UTF-8 character at text[i], or 0 when the bytes
-// there are not one (overlong forms, surrogates and values past U+10FFFF are
-// not), or when it is a C1 control character (U+0080..U+009F, not allowed in
-// YAML but for U+0085).
-std::size_t utf8_length(const std::string& text, std::size_t i) {
-    const auto byte = [&](std::size_t k) { return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u; };
-    const unsigned c = byte(i);
-    const auto cont = [&](std::size_t k, unsigned lo = 0x80, unsigned hi = 0xbf) {
-        return byte(k) >= lo && byte(k) <= hi;
-    };
-    if (c < 0x80) return 1;
-    if (c == 0xc2) return (cont(i + 1, 0xa0) || byte(i + 1) == 0x85) ? 2 : 0;
-    if (c >= 0xc3 && c <= 0xdf) return cont(i + 1) ? 2 : 0;
-    if (c == 0xe0) return cont(i + 1, 0xa0) && cont(i + 2) ? 3 : 0;
-    if (c == 0xed) return cont(i + 1, 0x80, 0x9f) && cont(i + 2) ? 3 : 0;
-    if (c >= 0xe1 && c <= 0xef) return cont(i + 1) && cont(i + 2) ? 3 : 0;
-    if (c == 0xf0) return cont(i + 1, 0x90) && cont(i + 2) && cont(i + 3) ? 4 : 0;
-    if (c >= 0xf1 && c <= 0xf3) return cont(i + 1) && cont(i + 2) && cont(i + 3) ? 4 : 0;
-    if (c == 0xf4) return cont(i + 1, 0x80, 0x8f) && cont(i + 2) && cont(i + 3) ? 4 : 0;
-    return 0;
 }
 
 // The character at a yaml-cpp mark (0-based line, column in characters), for
@@ -170,57 +131,6 @@ void check_structure(const std::string& file, const std::string& text) {
 }
 
 }  // namespace
-
-void check_input_text(const std::string& file, const std::string& text) {
-    if (text.size() > kMaxInputBytes)
-        throw InputError(file, "file too large: " + std::to_string(text.size()) + " bytes (the limit is " +
-                                   std::to_string(kMaxInputBytes) + " bytes, 1 MiB)");
-    int line = 1, column = 1;
-    for (std::size_t i = 0; i < text.size();) {
-        const auto c = static_cast<unsigned char>(text[i]);
-        if (c == '\n') {
-            ++line;
-            column = 1;
-            ++i;
-            continue;
-        }
-        if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f)
-            throw InputError(file, line, column,
-                             "binary data, not text: control byte " + hex_byte(c) +
-                                 " (scene and movie files are UTF-8 text)");
-        const std::size_t length = utf8_length(text, i);
-        if (length == 0)
-            throw InputError(file, line, column,
-                             "not UTF-8 text: byte " + hex_byte(c) + " (scene and movie files are UTF-8 text)");
-        i += length;
-        ++column;
-    }
-}
-
-std::string read_input_file(const std::string& path) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0)
-        throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(errno)));
-    // Opening a folder succeeds on Linux and then reads nothing; a device or a
-    // pipe may never end. Say why instead.
-    if (S_ISDIR(st.st_mode)) throw InputError(path, "cannot read file: is a directory");
-    if (!S_ISREG(st.st_mode)) throw InputError(path, "cannot read file: not a regular file");
-    if (static_cast<unsigned long long>(st.st_size) > kMaxInputBytes)
-        throw InputError(path, "file too large: " + std::to_string(st.st_size) + " bytes (the limit is " +
-                                   std::to_string(kMaxInputBytes) + " bytes, 1 MiB)");
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(errno)));
-    // At most one byte past the limit, should the file have grown since.
-    std::string text(kMaxInputBytes + 1, '\0');
-    const std::size_t n = std::fread(text.data(), 1, text.size(), f);
-    const bool failed = std::ferror(f) != 0;
-    const int read_errno = errno;
-    std::fclose(f);
-    if (failed) throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(read_errno)));
-    text.resize(n);
-    check_input_text(path, text);
-    return text;
-}
 
 YAML::Node YamlReader::load_map(const std::string& what) const { return parse_map(read_input_file(file_), what); }
 
@@ -356,42 +266,6 @@ InputError to_input_error(const std::string& file, const YAML::Exception& e) {
     const std::string message = "invalid yaml: " + (too_deep ? std::string("nested too deeply") : e.msg);
     if (e.mark.is_null()) return InputError(file, message);
     return InputError(file, e.mark.line + 1, e.mark.column + 1, message);
-}
-
-int edit_distance(const std::string& a, const std::string& b) {
-    const std::size_t n = a.size(), m = b.size();
-    std::vector<std::vector<int>> d(n + 1, std::vector<int>(m + 1));
-    for (std::size_t i = 0; i <= n; ++i) d[i][0] = static_cast<int>(i);
-    for (std::size_t j = 0; j <= m; ++j) d[0][j] = static_cast<int>(j);
-    for (std::size_t i = 1; i <= n; ++i) {
-        for (std::size_t j = 1; j <= m; ++j) {
-            const int cost = a[i - 1] == b[j - 1] ? 0 : 1;
-            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-            // A swap of two neighbours ("cmaera") is one typo, not two.
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-        }
-    }
-    return d[n][m];
-}
-
-std::string closest_match(const std::string& word, const std::vector<std::string>& options) {
-    std::string best;
-    int best_distance = INT_MAX;
-    // The distance is at least the difference in length: long words (a name
-    // may be a megabyte) are never compared at quadratic cost.
-    if (word.size() > 64) return best;
-    for (const std::string& option : options) {
-        if (option.size() > word.size() + 2 || word.size() > option.size() + 2) continue;
-        const int dist = edit_distance(word, option);
-        // At most 2 edits, and not more than half the word: "u" may be "up",
-        // but "x" is not "up".
-        if (dist <= 2 && dist <= static_cast<int>(option.size()) / 2 && dist < best_distance) {
-            best = option;
-            best_distance = dist;
-        }
-    }
-    return best;
 }
 
 }  // namespace fh

@@ -4,31 +4,21 @@
 // 0-based), so a typo is reported where it is, never passed over silently.
 #pragma once
 
-#include <cstddef>
 #include <string>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
 
 #include "core/vec.h"
+#include "io/closest_match.h"  // the loaders' "did you mean" hints
 #include "io/input_error.h"
+#include "io/text_input.h"
 
 namespace fh {
 
-// Documented limits on input files, checked before any YAML is parsed.
-// 1 MiB is 500 times the report's scene; a bigger file is refused, not read.
-inline constexpr std::size_t kMaxInputBytes = std::size_t(1) << 20;
 // Maps and lists nested deeper than this are refused (the formats need 5).
+// The limits on the file itself (size, encoding) are in io/text_input.h.
 inline constexpr int kMaxYamlNesting = 64;
-
-// Reads a scene or movie file as text: it must be a regular file (not a
-// folder, device or pipe) of at most kMaxInputBytes, and text: UTF-8 without
-// control characters other than tab, line feed and carriage return. Anything
-// else is an InputError naming the file (and the offending byte's position).
-std::string read_input_file(const std::string& path);
-
-// The same checks on text already in memory (`file` names it in errors).
-void check_input_text(const std::string& file, const std::string& text);
 
 // Reads values of one file; knows the file name to put in front of errors.
 class YamlReader {
@@ -77,11 +67,5 @@ std::string got(const YAML::Node& node);
 // A yaml-cpp exception that escaped the checks above, as bad input at its
 // position: no yaml-cpp exception may leave a loader.
 InputError to_input_error(const std::string& file, const YAML::Exception& e);
-
-// Optimal-string-alignment edit distance, for "did you mean" hints.
-int edit_distance(const std::string& a, const std::string& b);
-
-// The option closest to `word`, or "" when none is close enough to suggest.
-std::string closest_match(const std::string& word, const std::vector<std::string>& options);
 
 }  // namespace fh

@@ -112,11 +112,11 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
         // The falloff keeps the real intensity; an off light (simulated only
         // when not pruning) gets zero colour terms instead, so its shadow rays
         // are still traced.
-        SpotLight<T> spot{l.name, Color<T>(l.color), T(l.intensity), Vec3<T>(l.position),
-                          Vec3<T>(l.axis), T(l.max_angle)};
+        f.spot_lights.push_back({l.name, Color<T>(l.color), T(l.intensity), Vec3<T>(l.position),
+                                 Vec3<T>(l.axis), T(l.max_angle)});
         // theta never exceeds pi, so a cone that wide needs no test.
-        spot.cone_test = !plan.pruned || l.max_angle < 3.14159265358979323846;
-        f.spot_lights.push_back(spot);
+        const bool cone_test = !plan.pruned || l.max_angle < 3.14159265358979323846;
+        f.spot_widest_angles.push_back(cone_test ? T(l.max_angle) : kInfinity<T>);
         add_terms(f.spot_terms, l.color, l.on ? 1.0 : 0.0);  // x falloff
     }
     return f;

@@ -1,17 +1,15 @@
 #include "render/render.h"
 
-#include "render/render_frame_in.h"
+#include "render/tile_renderer.h"
 
 namespace fh {
 
-template FrameResult render_frame_in<double>(const Scene&, const Camera&, const RenderSettings&, const Effects&,
-                                             ThreadPool*);
+template FrameResult render_frame<double>(const Scene&, const Camera&, const RenderSettings&, ThreadPool*);
 
 FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                         const Effects& effects, ThreadPool* pool) {
-    if (settings.precision == Precision::single)
-        return render_frame_in<float>(scene, camera, settings, effects, pool);
-    return render_frame_in<double>(scene, camera, settings, effects, pool);
+                         ThreadPool* pool) {
+    if (settings.precision == Precision::float32) return render_frame<float>(scene, camera, settings, pool);
+    return render_frame<double>(scene, camera, settings, pool);
 }
 
 }  // namespace fh

@@ -22,8 +22,15 @@ struct FrameResult {
 
 // pool == nullptr renders on the calling thread only (the frame generator
 // runs one frame per worker that way).
+// In settings.precision's scalar type.
 FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                         const Effects& effects, ThreadPool* pool);
+                         ThreadPool* pool);
+// In T (float or double), whatever settings.precision says.
+template <typename T>
+FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                         ThreadPool* pool);
+extern template FrameResult render_frame<float>(const Scene&, const Camera&, const RenderSettings&, ThreadPool*);
+extern template FrameResult render_frame<double>(const Scene&, const Camera&, const RenderSettings&, ThreadPool*);
 
 inline constexpr int kTileSize = 16;
 

@@ -1,9 +1,8 @@
-// render_frame_in<float>, in a file of its own: render/render_frame_in.h.
-#include "render/render_frame_in.h"
+// render_frame<float>, in a file of its own: render/tile_renderer.h.
+#include "render/tile_renderer.h"
 
 namespace fh {
 
-template FrameResult render_frame_in<float>(const Scene&, const Camera&, const RenderSettings&, const Effects&,
-                                            ThreadPool*);
+template FrameResult render_frame<float>(const Scene&, const Camera&, const RenderSettings&, ThreadPool*);
 
 }  // namespace fh

@@ -1,13 +1,16 @@
 // What a render is asked to do: quality knobs and the effects switched on.
+// A job's settings, travelling beside its Scene (which holds only what the
+// scene file describes): a movie's `render:`/`effects:` and the command
+// line's quality flags change these, never the Scene.
 #pragma once
 
 #include <string>
 
 namespace fh {
 
-enum class Precision { single, dual };  // float, double: the tracer's scalar type
+enum class Precision { float32, float64 };  // the tracer's scalar type: float, double
 
-inline const char* precision_name(Precision p) { return p == Precision::single ? "float" : "double"; }
+inline const char* precision_name(Precision p) { return p == Precision::float32 ? "float" : "double"; }
 
 // Documented limits: past these a request is refused as bad input rather than
 // attempted (a 100000 x 100000 image would need 30 GB).
@@ -15,21 +18,6 @@ struct Limits {
     static constexpr int max_image_side = 16384;
     static constexpr int max_samples_per_pixel = 4096;
     static constexpr int max_depth = 64;
-};
-
-struct RenderSettings {
-    int samples_per_pixel = 1;
-    int max_depth = 5;  // reflection rays a primary ray may spawn in a chain
-    Precision precision = Precision::dual;
-    // Adaptive anti-aliasing (render/adaptive.h): after the first pass, pixels
-    // more than adaptive_threshold (0..255) from a neighbour get
-    // adaptive_samples stratified samples instead.
-    bool adaptive = false;
-    double adaptive_threshold = 8;
-    int adaptive_samples = 16;
-    // Debug: false simulates every effect asked for, even those the effect
-    // plan proves cannot change a pixel (render/effect_plan.h). Same bytes.
-    bool prune = true;
 };
 
 // The effects of the report's shading (SPEC section 4).
@@ -54,6 +42,22 @@ struct Effects {
         add(glazing, "glazing");
         return s;
     }
+};
+
+struct RenderSettings {
+    int samples_per_pixel = 1;
+    int max_depth = 5;  // reflection rays a primary ray may spawn in a chain
+    Precision precision = Precision::float64;
+    // Adaptive anti-aliasing (render/adaptive.h): after the first pass, pixels
+    // more than adaptive_threshold (0..255) from a neighbour get
+    // adaptive_samples stratified samples instead.
+    bool adaptive = false;
+    double adaptive_threshold = 8;
+    int adaptive_samples = 16;
+    // Debug: false simulates every effect asked for, even those the effect
+    // plan proves cannot change a pixel (render/effect_plan.h). Same bytes.
+    bool prune = true;
+    Effects effects;  // asked for: the file's `effects:` list
 };
 
 }  // namespace fh

@@ -5,7 +5,7 @@
 //        Lambert diffuse and Blinn-Phong specular (specular only where n.l > 0)
 //   6. glazing: + reflectivity * colour of the mirrored ray, lit or not,
 //      up to max_depth reflection rays in a chain.
-// Colours stay unclamped here; the pixel clamps (render/render_frame_in.h).
+// Colours stay unclamped here; the pixel clamps (render/tile_renderer.h).
 //
 // A packet of rays goes through these steps together, each step one SIMD
 // formula over its lanes, with a mask of the rays still in play: the shadow
@@ -157,7 +157,7 @@ private:
             add_light(ray, s, hit, sample, &scene_.directional_terms[l * materials], local, counts);
         }
         for (size_t l = 0; l < scene_.spot_lights.size(); ++l)
-            add_light(ray, s, hit, scene_.spot_lights[l].radiance_at(s.point),
+            add_light(ray, s, hit, scene_.spot_lights[l].radiance_at(s.point, scene_.spot_widest_angles[l]),
                       &scene_.spot_terms[l * materials], local, counts);
     }
 

@@ -1,7 +1,7 @@
 // The scene as a file describes it (report sections 3-7): surfaces, materials,
-// lights and cameras, in double precision, plus the scene's default render
-// settings and effects. The tracer builds its own flat copy in its scalar type
-// for each frame (render/flat_scene.h).
+// lights and cameras, in double precision. How to render it (quality, effects)
+// travels beside it in RenderSettings (render/settings.h). The tracer builds
+// its own flat copy in its scalar type (render/flat_scene.h).
 #pragma once
 
 #include <string>
@@ -10,7 +10,6 @@
 #include "geometry/plane.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
-#include "render/settings.h"
 #include "scene/camera.h"
 #include "scene/lights.h"
 #include "scene/material.h"
@@ -28,8 +27,6 @@ struct Scene {
     std::vector<DirectionalLight<double>> directional_lights;
     std::vector<SpotLight<double>> spot_lights;
     std::vector<Camera> cameras;
-    RenderSettings render;
-    Effects effects;
 
     const Camera* find_camera(const std::string& name) const {
         for (const Camera& c : cameras)

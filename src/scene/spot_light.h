@@ -40,13 +40,11 @@ struct SpotLight {
     Vec3<T> axis{0, 0, -1};  // unit; the cone's axis, pointing away from the light
     T max_angle = T(2 * 3.14159265358979323846);  // radians
     bool on = true;
-    bool cone_test = true;  // false when max_angle >= pi: every theta is inside
 
-    // The widest theta that gets light.
-    T widest_angle() const { return cone_test ? max_angle : kInfinity<T>; }
-
-    // For each point of a packet. Branch-free.
-    FH_HOT_INLINE LightSample<T> radiance_at(const Vec3Lanes<T>& p) const {
+    // For each point of a packet. Branch-free. widest_angle: the widest theta
+    // that gets light -- max_angle, or infinity where the effect plan knows
+    // every theta is inside the cone (max_angle >= pi) and skips the test.
+    FH_HOT_INLINE LightSample<T> radiance_at(const Vec3Lanes<T>& p, T widest_angle) const {
         const Vec3Lanes<T> delta = position - p;
         const Lanes<T> d2 = dot(delta, delta);
         // At the light's own position the direction is undefined: no light.
@@ -58,7 +56,7 @@ struct SpotLight {
         // Rounding can push the cosine just past +-1, outside acos's domain.
         const Lanes<T> cos_theta = min(splat(T(1)), max(splat(T(-1)), -dot(r.to_light, axis)));
         const Lanes<T> theta = acos_fast(cos_theta);
-        const LaneMask<T> inside = theta <= widest_angle();
+        const LaneMask<T> inside = theta <= widest_angle;
         // Right next to the light, d^2 can be so small (subnormal) that I / d^2
         // overflows to infinity. Capped at sqrt(max): finite, with room for the
         // colour products, and saturating every pixel it reaches anyway.
@@ -71,6 +69,7 @@ struct SpotLight {
         r.intensity = select(defined & inside, falloff, splat(T(0)));
         return r;
     }
+    FH_HOT_INLINE LightSample<T> radiance_at(const Vec3Lanes<T>& p) const { return radiance_at(p, max_angle); }
 
     // One point: the packet formula with that point in every lane.
     SpotRadiance<T> radiance_at(const Vec3<T>& p) const {

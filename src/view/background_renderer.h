@@ -37,8 +37,8 @@ struct Result {
 // replaces one not yet started and ends a refinement before its next pass.
 class Renderer {
 public:
-    Renderer(const Scene& scene, const RenderSettings& settings, const Effects& effects, int threads)
-        : scene_(scene), settings_(settings), effects_(effects), pool_(threads),
+    Renderer(const Scene& scene, const RenderSettings& settings, int threads)
+        : scene_(scene), settings_(settings), pool_(threads),
           thread_([this] { loop(); }) {}
 
     ~Renderer() {
@@ -107,7 +107,7 @@ private:
                 s.samples_per_pixel = 1;
                 s.adaptive = false;
             }
-            FrameResult fr = render_frame(scene_, view::reduced(full, divisor), s, effects_, &pool_);
+            FrameResult fr = render_frame(scene_, view::reduced(full, divisor), s, &pool_);
             {
                 const std::lock_guard lock(mutex_);
                 result_ = Result{req.generation, req.state, divisor, std::move(fr.image), fr.render_ms};
@@ -124,7 +124,6 @@ private:
 
     const Scene& scene_;
     RenderSettings settings_;
-    Effects effects_;
     ThreadPool pool_;
     mutable std::mutex mutex_;
     std::condition_variable wake_;

@@ -78,10 +78,7 @@ int run_view(const Words& words) {
 
 #include "anim/movie.h"
 #include "cli/job.h"
-#include "io/input_error.h"
-#include "io/movie_loader.h"
 #include "io/png_writer.h"
-#include "io/scene_loader.h"
 #include "render/render.h"
 #include "view/background_renderer.h"
 #include "view/view_state.h"
@@ -116,9 +113,8 @@ struct Glfw {
 
 class Viewer {
 public:
-    Viewer(view::ViewState state, const Scene& scene, const RenderSettings& settings,
-           const Effects& effects, int threads)
-        : state_(std::move(state)), renderer_(scene, settings, effects, threads) {}
+    Viewer(view::ViewState state, const Scene& scene, const RenderSettings& settings, int threads)
+        : state_(std::move(state)), renderer_(scene, settings, threads) {}
 
     int run() {
         const Camera cam = state_.camera();
@@ -336,51 +332,15 @@ int run_view(const Words& words) {
     auto spec = job_flags();
     spec.push_back({"--threads"});
     const Args args = Args::parse("view", words, spec);
-    if (args.positional().size() != 1)
-        throw UsageError("expected one FILE (a scene or movie file), got " +
-                         std::to_string(args.positional().size()));
-    const std::string file = args.positional()[0];
     const int threads = args.integer("--threads", 0, 0, 1024);
-
     // Bad input is found (status 2) before a window is asked for.
-    std::optional<Movie> movie;
-    std::optional<Scene> scene;
+    const Job job = load_job_from(args);
     std::optional<view::ViewState> state;
-    if (is_movie_file(file)) {
-        if (args.has("--camera"))
-            throw UsageError("--camera applies to scene files; " + file +
-                             " is a movie (its camera is set in the file; P flips its projection)");
-        movie = load_movie(file);
-        try {
-            warn_parallel_up(file, check_camera_path(*movie));
-        } catch (const std::invalid_argument& e) {
-            throw InputError(file, e.what());
-        }
-        state.emplace(file, *movie, args.integer("--frame", 0, 0, movie->frame_count() - 1));
-    } else {
-        if (args.has("--frame"))
-            throw UsageError("--frame applies to movie files; " + file + " is a scene");
-        scene = load_scene(file);
-        int index = 0;
-        if (const auto name = args.value("--camera")) {
-            std::vector<std::string> names;
-            for (const auto& c : scene->cameras) names.push_back(c.name);
-            const auto it = std::find(names.begin(), names.end(), *name);
-            if (it == names.end()) {
-                const std::string near = closest_match(*name, names);
-                throw UsageError("no camera '" + *name + "' in " + file +
-                                 (near.empty() ? "" : " (did you mean '" + near + "'?)"));
-            }
-            index = int(it - names.begin());
-        }
-        state.emplace(file, *scene, index);
-    }
-    const Scene& s = movie ? movie->scene : *scene;
-    RenderSettings settings = s.render;
-    apply_quality_flags(args, settings);
+    if (job.is_movie_file) state.emplace(job.file, job.movie, job.frame);
+    else state.emplace(job.file, job.scene(), job.camera_index);
 
     const Glfw glfw;
-    Viewer viewer(*state, s, settings, s.effects, threads);
+    Viewer viewer(*state, job.scene(), job.settings(), threads);
     return viewer.run();
 }
 

@@ -9,6 +9,7 @@
 #include <regex>
 
 #include "cli/run_command.h"
+#include "io/atomic_file.h"
 #include "io/png_writer.h"
 #include "support/png_read.h"
 

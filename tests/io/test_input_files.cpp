@@ -12,7 +12,7 @@
 #include "io/input_error.h"
 #include "io/movie_loader.h"
 #include "io/scene_loader.h"
-#include "io/yaml_reader.h"
+#include "io/text_input.h"
 #include "io/scene_error.h"
 #include "test_util.h"
 
@@ -62,7 +62,7 @@ TEST(InputFiles, JustUnderTheLimitLoads) {
     while (text.size() + pad.size() <= kMaxInputBytes) text += pad;
     text += std::string(kMaxInputBytes - text.size() - 1, '#') + "\n";
     ASSERT_EQ(text.size(), kMaxInputBytes);
-    const Scene s = load_scene(write_temp_file("big_ok.yaml", text));
+    const Scene s = load_scene(write_temp_file("big_ok.yaml", text)).scene;
     EXPECT_EQ(s.cameras.size(), 1u);
     EXPECT_EQ(scene_error(text + "\n"), "FILE: error: file too large: 1048577 bytes (the limit is 1048576 bytes, 1 MiB)");
 }
@@ -90,7 +90,7 @@ TEST(InputFiles, NotUtf8) {
 TEST(InputFiles, Utf8TextIsFine) {
     const Scene s = load_scene(write_temp_file("utf8.yaml", "\xef\xbb\xbf# caf\xc3\xa9 \xe2\x9c\x93 \xf0\x9f\x8e\xa5\r\n" +
                                                                 kCamera + "materials:\n  \xc3\xa9t\xc3\xa9: {color: [1, 2, 3],"
-                                                                          " ambient: 0, diffuse: 0, specular: 0, phong_exponent: 1}\n"));
+                                                                          " ambient: 0, diffuse: 0, specular: 0, phong_exponent: 1}\n")).scene;
     ASSERT_EQ(s.material_names.size(), 1u);
     EXPECT_EQ(s.material_names[0], "\xc3\xa9t\xc3\xa9");
 }
@@ -175,10 +175,10 @@ TEST(InputFiles, ManyKeysAreCheckedInLinearTime) {
 }
 
 TEST(InputFiles, FromStringEqualsFromFile) {
-    const Scene a = load_scene(std::string(FIRSTHIT_SOURCE_DIR) + "/animations/scene.yaml");
+    const Scene a = load_scene(std::string(FIRSTHIT_SOURCE_DIR) + "/animations/scene.yaml").scene;
     std::ifstream in(std::string(FIRSTHIT_SOURCE_DIR) + "/animations/scene.yaml", std::ios::binary);
     const std::string content{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    const Scene b = load_scene_from_string(content, "scene.yaml");
+    const Scene b = load_scene_from_string(content, "scene.yaml").scene;
     EXPECT_EQ(a.material_names, b.material_names);
     EXPECT_EQ(a.spheres.size(), b.spheres.size());
     EXPECT_EQ(a.cameras.size(), b.cameras.size());

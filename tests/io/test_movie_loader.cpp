@@ -99,9 +99,9 @@ TEST(MovieLoader, DefaultsOverridesAndFixedValues) {
     EXPECT_DOUBLE_EQ(m.fps, 30);
     EXPECT_DOUBLE_EQ(m.seconds, 10);
     EXPECT_EQ(m.scene.ambient_lights.size() + m.scene.directional_lights.size() + m.scene.spot_lights.size(), 3u);
-    EXPECT_EQ(m.scene.render.samples_per_pixel, 8);
-    EXPECT_EQ(m.scene.render.max_depth, 3);  // the scene's, not overridden
-    EXPECT_EQ(m.scene.effects.names(), "ambient");
+    EXPECT_EQ(m.settings.samples_per_pixel, 8);
+    EXPECT_EQ(m.settings.max_depth, 3);  // the scene's, not overridden
+    EXPECT_EQ(m.settings.effects.names(), "ambient");
     EXPECT_EQ(std::get<dvec3>(*m.view_point), dvec3(1, 2, 3));
     EXPECT_EQ(std::get<dvec3>(*m.up), dvec3(0, 0, 1));
     EXPECT_FALSE(m.look_at);

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/png_writer.h"
 #include "test_util.h"

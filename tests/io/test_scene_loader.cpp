@@ -27,7 +27,8 @@ const std::string kCamera =
 using test::scene_error;
 
 TEST(SceneLoader, LoadsTheReportScene) {
-    const Scene s = load_scene(std::string(FIRSTHIT_SOURCE_DIR) + "/animations/scene.yaml");
+    const SceneFile file = load_scene(std::string(FIRSTHIT_SOURCE_DIR) + "/animations/scene.yaml");
+    const Scene& s = file.scene;
     ASSERT_EQ(s.materials.size(), 5u);
     EXPECT_EQ(s.material_names, (std::vector<std::string>{"plane", "red", "teal", "green", "metal"}));
     const Material<double>& plane = s.materials[0];
@@ -79,23 +80,24 @@ TEST(SceneLoader, LoadsTheReportScene) {
     EXPECT_EQ(s.cameras[1].width, 800);
     EXPECT_EQ(s.cameras[1].view_point, dvec3(2, -10, 10));
     EXPECT_EQ(s.cameras[1].look_at, dvec3(0, 2, -1));
-    EXPECT_EQ(s.render.samples_per_pixel, 1);
-    EXPECT_EQ(s.render.max_depth, 5);
-    EXPECT_EQ(s.effects.names(), "ambient diffuse specular shadows glazing");
+    EXPECT_EQ(file.settings.samples_per_pixel, 1);
+    EXPECT_EQ(file.settings.max_depth, 5);
+    EXPECT_EQ(file.settings.effects.names(), "ambient diffuse specular shadows glazing");
 }
 
 TEST(SceneLoader, DefaultsAndOptionalParts) {
-    const Scene s = load_scene(write_temp_file("minimal.yaml", kCamera));
+    const SceneFile file = load_scene(write_temp_file("minimal.yaml", kCamera));
+    const Scene& s = file.scene;
     EXPECT_TRUE(s.materials.empty());
     EXPECT_TRUE(s.spheres.empty());
-    EXPECT_EQ(s.render.samples_per_pixel, 1);
-    EXPECT_EQ(s.render.max_depth, 5);
-    EXPECT_EQ(s.render.precision, Precision::dual);
-    EXPECT_EQ(s.effects.names(), "ambient diffuse specular shadows glazing");
+    EXPECT_EQ(file.settings.samples_per_pixel, 1);
+    EXPECT_EQ(file.settings.max_depth, 5);
+    EXPECT_EQ(file.settings.precision, Precision::float64);
+    EXPECT_EQ(file.settings.effects.names(), "ambient diffuse specular shadows glazing");
 }
 
 TEST(SceneLoader, PerTermColoursRenderAndEffects) {
-    const Scene s = load_scene(write_temp_file("terms.yaml", kCamera +
+    const SceneFile file = load_scene(write_temp_file("terms.yaml", kCamera +
         "materials:\n"
         "  m: {ambient_color: [1, 2, 3], diffuse_color: [4, 5, 6], specular_color: [7, 8, 9],\n"
         "      ambient: 0, diffuse: 1, specular: 1, phong_exponent: 0}\n"
@@ -103,19 +105,20 @@ TEST(SceneLoader, PerTermColoursRenderAndEffects) {
         "      phong_exponent: 1}\n"
         "render: {samples_per_pixel: 16, max_depth: 0, precision: float}\n"
         "effects: [diffuse, shadows]\n"));
+    const Scene& s = file.scene;
     EXPECT_EQ(s.materials[0].diffuse_color, dvec3(4, 5, 6));
     EXPECT_EQ(s.materials[1].ambient_color, dvec3(10, 10, 10));
     EXPECT_EQ(s.materials[1].specular_color, dvec3(0, 0, 0));
-    EXPECT_EQ(s.render.samples_per_pixel, 16);
-    EXPECT_EQ(s.render.max_depth, 0);
-    EXPECT_EQ(s.render.precision, Precision::single);
-    EXPECT_EQ(s.effects.names(), "diffuse shadows");
+    EXPECT_EQ(file.settings.samples_per_pixel, 16);
+    EXPECT_EQ(file.settings.max_depth, 0);
+    EXPECT_EQ(file.settings.precision, Precision::float32);
+    EXPECT_EQ(file.settings.effects.names(), "diffuse shadows");
 }
 
 TEST(SceneLoader, PlaneNormalIsNormalizedKeepingThePlane) {
     const Scene s = load_scene(write_temp_file("plane.yaml", kMaterial + kCamera +
         "surfaces:\n"
-        "  - {type: plane, normal: [0, 0, 4], distance: -8, material: red}\n"));
+        "  - {type: plane, normal: [0, 0, 4], distance: -8, material: red}\n")).scene;
     EXPECT_EQ(s.planes[0].normal, dvec3(0, 0, 1));
     EXPECT_DOUBLE_EQ(s.planes[0].distance, -2);
 }
@@ -123,7 +126,7 @@ TEST(SceneLoader, PlaneNormalIsNormalizedKeepingThePlane) {
 TEST(SceneLoader, DegenerateTriangleIsAccepted) {
     const Scene s = load_scene(write_temp_file("flat.yaml", kMaterial + kCamera +
         "surfaces:\n"
-        "  - {type: triangle, vertices: [[0, 0, 0], [1, 1, 1], [2, 2, 2]], material: red}\n"));
+        "  - {type: triangle, vertices: [[0, 0, 0], [1, 1, 1], [2, 2, 2]], material: red}\n")).scene;
     ASSERT_EQ(s.triangles.size(), 1u);
     EXPECT_EQ(s.triangles[0].normal, dvec3(0));
 }
@@ -379,9 +382,10 @@ TEST(SceneLoader, RenderLimitsAtAndPastTheEdges) {
     EXPECT_EQ(scene_error(kCamera + "render: {max_depth: 1000000000000}\n"),
               "FILE:4:21: error: 'max_depth' must be between 0 and 64, got 1000000000000");
     const std::string path = test::write_temp_file("edges.yaml", kCamera + "render: {samples_per_pixel: 4096, max_depth: 64}\n");
-    const Scene s = load_scene(path);
-    EXPECT_EQ(s.render.samples_per_pixel, 4096);
-    EXPECT_EQ(s.render.max_depth, 64);
+    const SceneFile file = load_scene(path);
+    const Scene& s = file.scene;
+    EXPECT_EQ(file.settings.samples_per_pixel, 4096);
+    EXPECT_EQ(file.settings.max_depth, 64);
 }
 
 TEST(SceneLoader, UnknownEffect) {

@@ -107,8 +107,7 @@ TEST(Yuv420, LumaIsFfmpegsByteForByteForEveryColour) {
 
 TEST(Yuv420, ChromaOfAReportFrameIsWithinAFewLevelsOfFfmpegs) {
     const Movie movie = load_movie(source_path("animations/movie1.yaml"));
-    const Image im = render_frame(movie.scene, camera_at(movie, 100), movie.scene.render, movie.scene.effects,
-                                  nullptr)
+    const Image im = render_frame(movie.scene, camera_at(movie, 100), movie.settings, nullptr)
                          .image;
     const std::string reference = ffmpeg_yuv(im.rgb, im.width, im.height, "yuv_frame");
     const auto ours = to_yuv420p(im);

@@ -37,7 +37,7 @@ Scene edge_scene() {
 }
 
 FrameResult render(const Scene& s, RenderSettings settings, ThreadPool* pool = nullptr) {
-    return render_frame(s, s.cameras.front(), settings, s.effects, pool);
+    return render_frame(s, s.cameras.front(), settings, pool);
 }
 
 RenderSettings samples(int spp) {
@@ -80,14 +80,14 @@ TEST(Accuracy, AdaptiveSpendsSamplesOnlyAtEdges) {
 
 // Is the first surface seen through pixel (x, y) glazed?
 bool glazed_at(const Scene& s, int x, int y) {
-    const auto flat = FlatScene<double>::build(s, plan_effects(s, s.effects, 5));
+    const auto flat = FlatScene<double>::build(s, plan_effects(s, Effects{}, 5));
     const Ray<double> ray = CameraRays<double>(s.cameras.front()).generate(x + 0.5, y + 0.5);
     const Hit<double> hit = closest_hit(flat, ray);
     return hit.found() && flat.shading[size_t(flat.surface(ray, hit).material)].glazed;
 }
 
 TEST(Accuracy, OneMoreLevelOfDepthChangesOnlyGlazedPixels) {
-    Scene s = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml");
+    Scene s = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml").scene;
     Camera cam = *s.find_camera("perspective");
     cam.width = cam.height = 160;
     s.cameras = {cam};

@@ -46,7 +46,7 @@ FrameResult render(const Scene& s, bool prune = true, int depth = 5) {
     RenderSettings settings;
     settings.max_depth = depth;
     settings.prune = prune;
-    return render_frame(s, s.cameras.front(), settings, s.effects, nullptr);
+    return render_frame(s, s.cameras.front(), settings, nullptr);
 }
 
 TEST(EffectPlan, ShadowRaysAreLightsTimesLitHits) {
@@ -75,16 +75,17 @@ TEST(EffectPlan, GlazedFloorReflectsOncePerPixelAndOffLightsCastNothing) {
 TEST(EffectPlan, ReasonsForWhatIsSkipped) {
     Scene s = floor_scene(1, false);
     s.materials[0].specular = 0;
-    s.effects.shadows = false;
-    const EffectPlan plan = plan_effects(s, s.effects, 5);
+    Effects effects;
+    effects.shadows = false;
+    const EffectPlan plan = plan_effects(s, effects, 5);
     EXPECT_EQ(plan.effects.names(), "ambient diffuse");
     EXPECT_EQ(plan.skipped, (std::vector<std::string>{"specular: no material has specular strength",
                                                       "glazing: no glazed material with reflectivity > 0"}));
-    EXPECT_EQ(plan_effects(s, s.effects, 0).skipped.front(), "glazing: max_depth is 0");
+    EXPECT_EQ(plan_effects(s, effects, 0).skipped.front(), "glazing: max_depth is 0");
 }
 
 TEST(EffectPlan, PruningNeverChangesAByte) {
-    const Scene report = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml");
+    const Scene report = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml").scene;
     struct Case {
         std::vector<std::string> lights;
         Projection projection;
@@ -117,17 +118,18 @@ TEST(EffectPlan, EachFigureGetsThePlanSpecGivesIt) {
         "ambient diffuse specular shadows glazing",
     };
     for (int n = 1; n <= 6; ++n) {
-        const Scene s = load_scene(std::string(FIRSTHIT_SOURCE_DIR) + "/animations/figures/figure" +
-                                   std::to_string(n) + ".yaml");
-        const EffectPlan plan = plan_effects(s, s.effects, s.render.max_depth);
+        const SceneFile f = load_scene(std::string(FIRSTHIT_SOURCE_DIR) + "/animations/figures/figure" +
+                                       std::to_string(n) + ".yaml");
+        const Scene& s = f.scene;
+        const EffectPlan plan = plan_effects(s, f.settings.effects, f.settings.max_depth);
         EXPECT_EQ(plan.effects.names(), expected[n - 1]) << "figure " << n;
         EXPECT_EQ(s.directional_lights.size(), n >= 2 && n <= 4 ? 1u : 0u) << "figure " << n;
         EXPECT_EQ(s.spot_lights.size(), n >= 5 ? 1u : 0u) << "figure " << n;
         const auto flat = FlatScene<double>::build(s, plan);
         if (n == 1) EXPECT_TRUE(flat.directional_lights.empty() && flat.spot_lights.empty());
         // Figure 5's cone is 2 pi wide: no cone test. Figure 6's is pi/4.
-        if (n == 5) EXPECT_FALSE(flat.spot_lights.at(0).cone_test);
-        if (n == 6) EXPECT_TRUE(flat.spot_lights.at(0).cone_test);
+        if (n == 5) EXPECT_EQ(flat.spot_widest_angles.at(0), kInfinity<double>);  // no cone test
+        if (n == 6) EXPECT_EQ(flat.spot_widest_angles.at(0), flat.spot_lights.at(0).max_angle);  // cone tested
     }
 }
 

@@ -18,7 +18,7 @@ namespace {
 // each sample clamped (NaN: black), the mean of a pixel's samples rounded.
 template <typename T>
 Image one_ray_at_a_time(const Scene& scene, const Camera& camera, int spp) {
-    const auto flat = FlatScene<T>::build(scene, plan_effects(scene, scene.effects, 5));
+    const auto flat = FlatScene<T>::build(scene, plan_effects(scene, Effects{}, 5));
     const CameraRays<T> rays(camera);
     const StrataGrid grid = strata_for(spp);
     Image image(camera.width, camera.height);
@@ -44,9 +44,9 @@ template <typename T>
 void expect_same_as_one_ray_at_a_time(const Scene& scene, const Camera& camera, int spp) {
     RenderSettings settings;
     settings.samples_per_pixel = spp;
-    settings.precision = std::is_same_v<T, float> ? Precision::single : Precision::dual;
+    settings.precision = std::is_same_v<T, float> ? Precision::float32 : Precision::float64;
     ThreadPool pool(2);
-    const Image packets = render_frame(scene, camera, settings, scene.effects, &pool).image;
+    const Image packets = render_frame(scene, camera, settings, &pool).image;
     const Image expected = one_ray_at_a_time<T>(scene, camera, spp);
     int differing = 0;
     for (size_t i = 0; i < packets.rgb.size(); ++i) differing += packets.rgb[i] != expected.rgb[i];
@@ -61,7 +61,7 @@ Camera small(Camera c) {
 }
 
 TEST(Packets, RenderFrameIsEachPixelsRaysTracedOneAtATime) {
-    const Scene scene = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml");
+    const Scene scene = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml").scene;
     for (const Camera& camera : scene.cameras)
         for (const int spp : {1, 4}) {
             expect_same_as_one_ray_at_a_time<double>(scene, small(camera), spp);
@@ -71,7 +71,7 @@ TEST(Packets, RenderFrameIsEachPixelsRaysTracedOneAtATime) {
 
 TEST(Packets, SameWithANarrowSpotCone) {
     // Figure 6: the spot light's cone test on, lanes on both sides of its edge.
-    const Scene scene = load_scene(FIRSTHIT_SOURCE_DIR "/animations/figures/figure6.yaml");
+    const Scene scene = load_scene(FIRSTHIT_SOURCE_DIR "/animations/figures/figure6.yaml").scene;
     expect_same_as_one_ray_at_a_time<double>(scene, small(scene.cameras.front()), 1);
     expect_same_as_one_ray_at_a_time<float>(scene, small(scene.cameras.front()), 1);
 }

@@ -134,13 +134,13 @@ namespace {
 // scene's materials must be read right for that: this once fell back to
 // std::pow for every material and halved the frame rate, with the same bytes.
 TEST(FlatScene, WholePhongExponentsTakeSquareAndMultiply) {
-    Scene s = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml");
-    const auto report = FlatScene<double>::build(s, plan_effects(s, s.effects, 5));
+    Scene s = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml").scene;
+    const auto report = FlatScene<double>::build(s, plan_effects(s, Effects{}, 5));
     EXPECT_FALSE(report.fractional_exponents);
     EXPECT_EQ(report.exponent_bits, 7);  // 100 = 0b1100100
     for (const auto& m : report.shading) EXPECT_TRUE(m.whole);
     s.materials[0].phong_exponent = 2.5;
-    const auto fractional = FlatScene<double>::build(s, plan_effects(s, s.effects, 5));
+    const auto fractional = FlatScene<double>::build(s, plan_effects(s, Effects{}, 5));
     EXPECT_TRUE(fractional.fractional_exponents);
     EXPECT_FALSE(fractional.shading[0].whole);
 }

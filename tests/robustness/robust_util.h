@@ -20,7 +20,7 @@ using Scalars = ::testing::Types<float, double>;
 
 template <typename T>
 constexpr Precision precision_of() {
-    return std::is_same_v<T, float> ? Precision::single : Precision::dual;
+    return std::is_same_v<T, float> ? Precision::float32 : Precision::float64;
 }
 
 // Sanitizer builds run the slowest loops of the battery with fewer rays.
@@ -72,7 +72,8 @@ inline FrameResult render(const Scene& s, const Camera& c, Precision p, const Ef
     rs.precision = p;
     rs.max_depth = max_depth;
     rs.samples_per_pixel = 1;
-    return render_frame(s, c, rs, fx, nullptr);
+    rs.effects = fx;
+    return render_frame(s, c, rs, nullptr);
 }
 
 // Item 11: no NaN or infinity reached a pixel.

@@ -81,7 +81,7 @@ TEST(CameraDegenerateBasis, NearlyParallelUpStaysOrthonormal) {
 // image is the same as with the rule's axis given as `up` explicitly.
 TYPED_TEST(CameraDegenerate, RenderedImagesAreFinite) {
     using T = TypeParam;
-    Scene s = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml");
+    Scene s = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml").scene;
     for (const auto proj : {Projection::perspective, Projection::orthographic}) {
         for (const dvec3 look : {dvec3(0, 0, -1), dvec3(0, 0, 1), dvec3(0.3, -0.2, -1)}) {
             for (const dvec3 up : {glm::normalize(look), -2.0 * glm::normalize(look), dvec3(0)}) {

@@ -58,7 +58,7 @@ Scene transformed(Scene s) {
 
 TYPED_TEST(ScaleInvariance, ReportSceneScaledAndMoved) {
     using T = TypeParam;
-    const Scene original = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml");
+    const Scene original = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml").scene;
     const Scene moved = transformed(original);
     // Also with each light on its own, so a shadow or highlight lost to one
     // light cannot hide under another's saturation.
@@ -72,8 +72,8 @@ TYPED_TEST(ScaleInvariance, ReportSceneScaledAndMoved) {
         // is fixed, so only the sampling changes): a quarter of the work.
         for (Scene* sc : {&a, &b})
             for (Camera& c : sc->cameras) c.width = c.height = kSanitized ? 400 : 800;
-        const auto ra = render(a, *a.find_camera("perspective"), precision_of<T>(), a.effects);
-        const auto rb = render(b, *b.find_camera("perspective"), precision_of<T>(), b.effects);
+        const auto ra = render(a, *a.find_camera("perspective"), precision_of<T>(), Effects{});
+        const auto rb = render(b, *b.find_camera("perspective"), precision_of<T>(), Effects{});
         expect_finite_frame(ra, "report scene");
         expect_finite_frame(rb, "report scene, x1000 and moved");
         EXPECT_EQ(ra.counts.primary, rb.counts.primary);

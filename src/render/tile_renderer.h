@@ -1,8 +1,8 @@
-// render_frame (render/render.h) in one scalar type: the tiles, the packets
-// of camera rays, the pixels. Only render.cpp (double) and render_float.cpp
-// (float) include this, each compiling one precision's shader variants --
-// the project's longest compile, split over two files so that two cores
-// share it.
+// render_frame<T> (render/render.h) in one scalar type: the tiles, the
+// packets of camera rays, the pixels. Only render.cpp (double) and
+// render_float.cpp (float) include this, each compiling one precision's
+// shader variants -- the project's longest compile, split over two files so
+// that two cores share it.
 #pragma once
 
 #include <algorithm>
@@ -18,13 +18,6 @@
 
 namespace fh {
 
-template <typename T>
-FrameResult render_frame_in(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                            const Effects& effects, ThreadPool* pool);
-extern template FrameResult render_frame_in<float>(const Scene&, const Camera&, const RenderSettings&,
-                                                   const Effects&, ThreadPool*);
-extern template FrameResult render_frame_in<double>(const Scene&, const Camera&, const RenderSettings&,
-                                                    const Effects&, ThreadPool*);
 
 namespace detail {
 
@@ -145,12 +138,12 @@ inline int tile_pixels(int t, int width, int height, PixelRef* out) {
 }  // namespace detail
 
 template <typename T>
-FrameResult render_frame_in(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                            const Effects& effects, ThreadPool* pool) {
+FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                         ThreadPool* pool) {
     using namespace detail;
     const auto start = std::chrono::steady_clock::now();
     const FlatScene<T> flat = FlatScene<T>::build(
-        scene, plan_effects(scene, effects, settings.max_depth, settings.prune));
+        scene, plan_effects(scene, settings.effects, settings.max_depth, settings.prune));
     const CameraRays<T> camera_rays(camera);
     FrameResult result;
     result.image = Image(camera.width, camera.height);

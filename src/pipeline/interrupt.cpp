@@ -1,4 +1,4 @@
-#include "cli/interrupt.h"
+#include "pipeline/interrupt.h"
 
 #include <cerrno>
 #include <ctime>

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "anim/frame_selection.h"
+#include "cli/cluster_shard.h"
 
 namespace fh {
 namespace {

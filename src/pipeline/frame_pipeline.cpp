@@ -1,0 +1,86 @@
+#include "pipeline/frame_pipeline.h"
+
+#include <atomic>
+#include <cstdlib>
+#include <mutex>
+#include <shared_mutex>
+
+#include "anim/frame_selection.h"
+#include "io/atomic_file.h"
+#include "io/input_error.h"
+#include "io/png_writer.h"
+#include "pipeline/interrupt.h"
+
+namespace fh {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+// Frames the raw video may hold, finished early, waiting for their turn.
+constexpr int kRawVideoWindow = 8;
+}  // namespace
+
+FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, const FramesRequest& request,
+                            FramesObserver& observer) {
+    if (request.raw_video && request.resume)
+        throw UsageError("--raw-video streams whole runs of frames: not with --shard or --resume");
+    const std::filesystem::path& out = request.folder;
+    const int n = movie.frame_count();
+    prepare_output_folder(out.string());
+    if (const int removed = remove_stale_temporaries(out.string())) observer.removed_temporaries(removed);
+
+    std::vector<int> frames = request.frames;
+    if (request.resume)
+        std::erase_if(frames, [&](int i) { return is_complete_png((out / frame_file_name(i, n)).string()); });
+    std::optional<RawVideoWriter> raw_video;
+    if (request.raw_video) raw_video.emplace(*request.raw_video, kRawVideoWindow, request.raw_pixel_format);
+
+    FramesSummary summary;
+    summary.to_render = int(frames.size());
+    observer.starting(summary.to_render);
+    const auto start = Clock::now();
+    // Frames are written under a shared lock; the interrupt watch takes it
+    // alone before ending the process, so no file is half written then.
+    std::shared_mutex write_mutex;
+    std::atomic<bool> finished{false};
+    std::atomic<int> done{0};
+    const InterruptWatch watch(request.interrupt_grace, [&](int sig) {
+        std::unique_lock lock(write_mutex);
+        if (finished) return;  // the run ended meanwhile: it reports itself
+        observer.abandoning(done, summary.to_render);
+        std::_Exit(128 + sig);
+    });
+    ThreadPool pool(request.threads);
+    std::mutex counts_mutex;
+    pool.parallel_for(summary.to_render, [&](int task, int) {
+        if (interrupted()) return;
+        const int i = frames[size_t(task)];
+        FrameResult r;
+        try {
+            r = render_frame(movie.scene, camera_at(movie, i), settings, nullptr);
+            {
+                std::shared_lock lock(write_mutex);
+                write_png((out / frame_file_name(i, n)).string(), r.image);
+            }
+            if (raw_video) raw_video->put(task, std::move(r.image));
+        } catch (const std::exception& e) {
+            if (raw_video) raw_video->fail(e.what());  // frames after this one wait for it
+            throw;
+        }
+        {
+            std::lock_guard lock(counts_mutex);
+            summary.counts += r.counts;
+            ++done;
+            observer.frame_done(i);
+        }
+    });
+    {
+        std::unique_lock lock(write_mutex);
+        finished = true;
+    }
+    summary.rendered = done;
+    summary.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (interrupted()) summary.interrupt_signal = interrupt_signal();
+    return summary;
+}
+
+}  // namespace fh

@@ -1,0 +1,63 @@
+// The movie pipeline: the selected frames of a movie rendered on a thread
+// pool, written to FOLDER/frame_NNNN.png whole or not at all, optionally
+// streamed in order as raw video for an encoder, resumable, and stopped
+// cleanly by SIGINT/SIGTERM. Frames are spread over the pool one per worker:
+// each worker renders its frame alone and encodes its PNG, so encoding runs
+// beside rendering instead of stalling it. A frame's bytes depend only on
+// its index, never on the selection, the order or the thread count.
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "anim/movie.h"
+#include "io/raw_video_writer.h"
+#include "render/render.h"
+
+namespace fh {
+
+struct FramesRequest {
+    std::vector<int> frames;  // which frames, increasing (anim/frame_selection.h)
+    std::filesystem::path folder;
+    bool resume = false;  // skip the frames whose file is already complete
+    // Also every frame in order to this file ("-": standard output); needs
+    // the whole selection rendered, so not with resume.
+    std::optional<std::string> raw_video;
+    RawPixelFormat raw_pixel_format = RawPixelFormat::rgb24;
+    int threads = 0;  // 0: one per core
+    // After SIGINT/SIGTERM, frames in flight may take this long to finish
+    // before the run abandons them and the process exits.
+    std::chrono::milliseconds interrupt_grace{500};
+};
+
+// What the pipeline tells its caller while it runs (a command's progress
+// line). frame_done is called from worker threads, one at a time.
+class FramesObserver {
+public:
+    virtual ~FramesObserver() = default;
+    virtual void removed_temporaries(int /*count*/) {}
+    virtual void starting(int /*frames_to_render*/) {}
+    virtual void frame_done(int /*frame*/) {}
+    // A signal came and the frames in flight overran the grace period: the
+    // process exits with 128 + signal right after this returns.
+    virtual void abandoning(int /*done*/, int /*total*/) {}
+};
+
+struct FramesSummary {
+    int rendered = 0;
+    int to_render = 0;  // the selection less the frames resume skipped
+    double seconds = 0;
+    RayCounts counts;
+    int interrupt_signal = 0;  // the run stopped early on this signal (0: it did not)
+};
+
+// Prepares the folder (created if missing; stale temporaries of killed runs
+// removed), then renders. Throws InputError for a bad folder, UsageError for
+// raw video with resume.
+FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, const FramesRequest& request,
+                            FramesObserver& observer);
+
+}  // namespace fh

@@ -1,0 +1,72 @@
+#include "pipeline/job.h"
+
+#include "io/closest_match.h"
+#include "io/input_error.h"
+#include "io/movie_loader.h"
+#include "io/scene_loader.h"
+
+namespace fh {
+
+namespace {
+
+std::string frame_list(const std::vector<int>& frames) {
+    std::string s;
+    for (size_t i = 0; i < frames.size() && i < 10; ++i) s += (i ? ", " : "") + std::to_string(frames[i]);
+    if (frames.size() > 10) s += ", ... (" + std::to_string(frames.size()) + " frames)";
+    return s;
+}
+
+int camera_index(const Scene& scene, const std::string& name, const std::string& file) {
+    std::vector<std::string> names;
+    for (const auto& c : scene.cameras) names.push_back(c.name);
+    for (size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return int(i);
+    const std::string near = closest_match(name, names);
+    throw UsageError("no camera '" + name + "' in " + file + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+}
+
+}  // namespace
+
+std::vector<std::string> check_movie_cameras(const std::string& file, const Movie& movie) {
+    std::vector<int> parallel;
+    try {
+        parallel = check_camera_path(movie);
+    } catch (const std::invalid_argument& e) {
+        throw InputError(file, e.what());
+    }
+    if (parallel.empty()) return {};
+    return {file + ": warning: view direction parallel to 'up' at frame(s) " + frame_list(parallel) +
+            "; using the fallback up axis"};
+}
+
+Job load_job(const JobRequest& request) {
+    Job job;
+    job.file = request.file;
+    job.is_movie_file = is_movie_file(job.file);
+    if (job.is_movie_file) {
+        if (request.camera)
+            throw UsageError("--camera applies to scene files; " + job.file +
+                             " is a movie (its camera is set in the file)");
+        job.movie = load_movie(job.file);
+        const int n = job.movie.frame_count();
+        job.frame = request.frame.value_or(0);
+        if (job.frame < 0 || job.frame > n - 1)
+            throw UsageError("--frame must be in [0, " + std::to_string(n - 1) + "], got " +
+                             std::to_string(job.frame));
+        job.warnings = check_movie_cameras(job.file, job.movie);
+        job.camera = camera_at(job.movie, job.frame);
+        return job;
+    }
+    if (request.frame) throw UsageError("--frame applies to movie files; " + job.file + " is a scene");
+    SceneFile scene_file = load_scene(job.file);
+    job.movie.scene = std::move(scene_file.scene);
+    job.movie.settings = scene_file.settings;
+    if (request.camera) job.camera_index = camera_index(job.movie.scene, *request.camera, job.file);
+    job.camera = job.movie.scene.cameras[size_t(job.camera_index)];
+    job.movie.camera = job.camera;
+    job.movie.fps = 1;
+    job.movie.seconds = 1;
+    return job;
+}
+
+}  // namespace fh

@@ -1,0 +1,45 @@
+// What a command renders: a scene or movie file loaded, its camera picked
+// (a scene file's named or first camera; a movie's camera at a frame) and
+// its render settings, in one call shared by render, bench, accuracy and view.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "anim/movie.h"
+
+namespace fh {
+
+struct JobRequest {
+    std::string file;
+    std::optional<std::string> camera;  // scene files only: a camera's name
+    std::optional<int> frame;           // movie files only: the frame (default 0)
+};
+
+struct Job {
+    std::string file;
+    // The file's scene and settings. A scene file loads as a still: no paths,
+    // the picked camera, one frame.
+    Movie movie;
+    bool is_movie_file = false;
+    int frame = -1;        // movie files: the picked frame; -1 for a scene file
+    int camera_index = 0;  // scene files: the picked camera in movie.scene.cameras
+    Camera camera;         // the picked camera: the scene's, or the movie's at `frame`
+    std::vector<std::string> warnings;  // one line each, for the command to print
+
+    const Scene& scene() const { return movie.scene; }
+    const RenderSettings& settings() const { return movie.settings; }
+};
+
+// Loads request.file and picks its camera. Bad files throw InputError; a
+// flag that does not fit the file (--camera on a movie, --frame on a scene,
+// an unknown camera, a frame out of range) throws UsageError.
+Job load_job(const JobRequest& request);
+
+// A movie's camera path checked at every frame: a zero or non-finite view
+// direction throws InputError naming the file and frame; frames where the
+// view is parallel to 'up' (the fallback up is used) give one warning line.
+std::vector<std::string> check_movie_cameras(const std::string& file, const Movie& movie);
+
+}  // namespace fh
