@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The movie pipeline against the encoder alone (issue 7, target 3):
+# The movie pipeline against the encoder alone:
 #   1. `make movies` (scripts/make_movies.sh: both movies at once, render,
 #      PNG, stream into ffmpeg),
 #   2. ffmpeg alone, at its defaults (x264 preset medium on every core),

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine: installs what is missing (apt-get) and
-# configures and builds firsthit in build/ (Release).
+# configures and builds firsthit in build/ (Release, for this machine's CPU:
+# FIRSTHIT_ARCH=x86-64-v2 bash scripts/setup.sh builds one that runs on any
+# x86-64 CPU, e.g. for a cluster whose nodes differ).
 #   bash scripts/setup.sh
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -8,8 +10,8 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libyaml-cpp-dev zlib1g-dev
           googletest libgtest-dev libbenchmark-dev ffmpeg gnuplot-nox
           clang libclang-rt-14-dev  # clang, libclang-rt: the fuzzers (scripts/fuzz.sh)
-          slurm-wlm munge  # a one-node Slurm cluster for tests/slurm/test_slurm.sh (issue 10)
-          libglfw3-dev libgl-dev  # firsthit view's window (issue 9; optional at build time)
+          slurm-wlm munge  # a one-node Slurm cluster for tests/slurm/test_slurm.sh
+          libglfw3-dev libgl-dev  # firsthit view's window (optional at build time)
           xvfb xdotool libgl1-mesa-dri)  # its test: a virtual X server, keys, Mesa's software GL
 missing=()
 for p in "${packages[@]}"; do
@@ -22,6 +24,6 @@ if [[ ${#missing[@]} -gt 0 ]]; then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release -DFIRSTHIT_ARCH="${FIRSTHIT_ARCH:-native}" >/dev/null
 cmake --build "$here/build" -j "$(nproc)"
 echo "setup: built $here/build/firsthit"

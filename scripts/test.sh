@@ -6,10 +6,11 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/scripts/setup.sh"
 cd "$here/build"
 ctest --output-on-failure -j "$(nproc)"
-# Issue 8: ThreadSanitizer over the threaded tests, then the loaders' fuzzers
+# ThreadSanitizer over the threaded tests and, built for AVX2, the tracer's
+# tests at that width; then the loaders' fuzzers
 # for 30 s each (each builds in its own folder: build-tsan, build-fuzz).
 bash "$here/scripts/test_tsan.sh"
 bash "$here/scripts/fuzz.sh" 30
-# Issue 4: every test once more under AddressSanitizer and
+# Every test once more under AddressSanitizer and
 # UndefinedBehaviorSanitizer (builds in build-asan).
 bash "$here/scripts/test_sanitizers.sh"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Every test once more under AddressSanitizer and UndefinedBehaviorSanitizer
-# (issue 4): builds firsthit and the tests in build-asan/ and runs CTest there.
+#: builds firsthit and the tests in build-asan/ and runs CTest there.
 # Any memory error, leak or undefined behaviour fails the test it happens in.
 # The slowest loop of the robustness battery (a million rays at the
 # tetrahedron's edges) runs a quarter of its rays there.
@@ -11,7 +11,7 @@ build=${FIRSTHIT_ASAN_BUILD:-$here/build-asan}
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
 
 mkdir -p "$build"
-if ! { cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DFIRSTHIT_NATIVE=ON \
+if ! { cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DFIRSTHIT_ARCH=x86-64-v2 \
          -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" &&
        cmake --build "$build" -j "$(nproc)" --target firsthit firsthit_tests; } >"$build/build.log" 2>&1; then
   echo "test_sanitizers: the build failed; the end of $build/build.log:" >&2

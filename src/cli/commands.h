@@ -14,7 +14,7 @@ int run_bench(const Words& words);
 int run_frames(const Words& words);
 int run_info(const Words& words);
 int run_accuracy(const Words& words);
-int run_view(const Words& words);  // src/view/view_command.cpp (issue 9)
+int run_view(const Words& words);  // src/view/view_command.cpp
 
 extern const char* const kRenderHelp;
 extern const char* const kBenchHelp;

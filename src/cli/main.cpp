@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "core/simd.h"
 #include "io/input_error.h"
 
 namespace fh {
@@ -52,7 +53,8 @@ int dispatch(int argc, char** argv) {
         return 0;
     }
     if (cmd == "--version") {
-        std::cout << "firsthit " << FIRSTHIT_VERSION << "\n";
+        std::cout << "firsthit " << FIRSTHIT_VERSION << " (built for " << FIRSTHIT_ARCH << ": " << kSimdBytes
+                  << "-byte SIMD, " << kLanes<double> << " doubles or " << kLanes<float> << " floats a packet)\n";
         return 0;
     }
     if (cmd == "render") return run_render(words);

@@ -41,11 +41,11 @@ FH_HOT_INLINE V asin_small(V s) {
     // run side by side (a single chain of FMAs waits on each one's latency).
     const V z = s * s;
     const V z2 = z * z;
-    V even = broadcast<V>(c[kTerms - 2]), odd = broadcast<V>(c[kTerms - 1]);
+    V even = as_lanes<V>(c[kTerms - 2]), odd = as_lanes<V>(c[kTerms - 1]);
 #pragma GCC unroll 16
     for (int k = kTerms - 4; k >= 0; k -= 2) {
-        even = fused_mul_add(even, z2, broadcast<V>(c[k]));
-        odd = fused_mul_add(odd, z2, broadcast<V>(c[k + 1]));
+        even = fused_mul_add(even, z2, as_lanes<V>(c[k]));
+        odd = fused_mul_add(odd, z2, as_lanes<V>(c[k + 1]));
     }
     const V p = fused_mul_add(odd, z, even);
     return fused_mul_add(s * z, p, s);

@@ -103,7 +103,7 @@ FH_HOT_INLINE Lanes<T> max_abs_component(const Vec3Lanes<T>& v) {
 }
 
 template <typename T>
-FH_HOT_INLINE Vec3Lanes<T> select(const LaneMask<T>& m, const Vec3Lanes<T>& a,
+FH_HOT_INLINE Vec3Lanes<T> select(const LaneInts<T>& m, const Vec3Lanes<T>& a,
                                   const Vec3Lanes<T>& b) {
     return {m ? a.x : b.x, m ? a.y : b.y, m ? a.z : b.z};
 }

@@ -3,7 +3,7 @@
 // with AVX2. The tracer runs every ray in packets of that many (core/packet.h).
 //
 // These are GCC/Clang vector extensions, not intrinsics: +, -, *, / and the
-// comparisons work lane by lane, a comparison gives a LaneMask<T> (all bits
+// comparisons work lane by lane, a comparison gives LaneInts<T> (all bits
 // set where true), and `m ? a : b` selects per lane. The compiler emits the
 // widest instructions the target has, and plain SSE2 code without AVX: the
 // code is vectorised as written, not by the auto-vectoriser's judgement.
@@ -54,10 +54,8 @@ struct LaneTypes {
 
 template <typename T>
 using Lanes = typename LaneTypes<T>::Values;
-// Per lane: 0 or all bits set (what comparisons give). Also the type of
-// per-lane integers such as primitive ids: as wide as T, so they line up.
-template <typename T>
-using LaneMask = typename LaneTypes<T>::Ints;
+// Per-lane integers as wide as T, so they line up with Lanes<T>: primitive
+// ids, and masks -- a comparison gives 0 or all bits set in each lane.
 template <typename T>
 using LaneInts = typename LaneTypes<T>::Ints;
 
@@ -89,7 +87,7 @@ FH_HOT_INLINE Lanes<T> splat(T x) {
 
 // x in every lane of V (x itself when V is a scalar).
 template <typename V>
-FH_HOT_INLINE V broadcast(ScalarOf<V> x) {
+FH_HOT_INLINE V as_lanes(ScalarOf<V> x) {
     if constexpr (std::is_floating_point_v<V>) return x;
     else return splat(x);
 }
@@ -103,7 +101,7 @@ FH_HOT_INLINE LaneInts<T> lane_index() {
 
 // Lanes [0, n) set: a packet's first n rays.
 template <typename T>
-FH_HOT_INLINE LaneMask<T> first_lanes(int n) {
+FH_HOT_INLINE LaneInts<T> first_lanes(int n) {
     return lane_index<T>() < typename LaneTypes<T>::Int(n);
 }
 
@@ -196,26 +194,26 @@ FH_HOT_INLINE V max(const V& a, const V& b) {
 // vfmadd...) once inlined: GCC vectorises a loop over a vector's lanes.
 template <LaneValues V>
 FH_HOT_INLINE V sqrt(const V& v) {
-    V r;
+    V r = v;  // overwritten lane by lane (a copy only quiets -Wmaybe-uninitialized)
     for (int i = 0; i < kLanes<ScalarOf<V>>; ++i) r[i] = std::sqrt(v[i]);
     return r;
 }
 template <LaneValues V>
 FH_HOT_INLINE V abs(const V& v) {
-    V r;
+    V r = v;  // overwritten lane by lane
     for (int i = 0; i < kLanes<ScalarOf<V>>; ++i) r[i] = std::abs(v[i]);
     return r;
 }
 template <LaneValues V>
 FH_HOT_INLINE V copysign(const V& magnitude, const V& sign) {
-    V r;
+    V r = magnitude;  // overwritten lane by lane
     for (int i = 0; i < kLanes<ScalarOf<V>>; ++i) r[i] = std::copysign(magnitude[i], sign[i]);
     return r;
 }
 // a*b + c with one rounding, lane by lane (hardware FMA only: see exact.h).
 template <LaneValues V>
 FH_HOT_INLINE V fused_mul_add(const V& a, const V& b, const V& c) {
-    V r;
+    V r = c;  // overwritten lane by lane
     for (int i = 0; i < kLanes<ScalarOf<V>>; ++i) r[i] = std::fma(a[i], b[i], c[i]);
     return r;
 }

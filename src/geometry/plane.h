@@ -36,7 +36,7 @@ struct Plane {
         // and reflection rays leave it): skip the division.
         if (none((height * denom > T(0)) & (t_max > t_min))) return splat(kInfinity<T>);
         const Lanes<T> t = height / denom;
-        const LaneMask<T> crosses = abs(denom) >= ParallelLimit<T>::value;
+        const LaneInts<T> crosses = abs(denom) >= ParallelLimit<T>::value;
         return select(crosses & (t > t_min) & (t < t_max), t, splat(kInfinity<T>));
     }
 

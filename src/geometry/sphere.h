@@ -5,7 +5,7 @@
 // from the ray's closest approach instead, r^2 - |f - (f.d)d|^2, whose terms
 // are ~ r^2, and take the smaller-magnitude root as c/q so it does not cancel
 // (Ray Tracing Gems, ch. 7). Two refinements keep the silhouette exact to a
-// few ulps of r at any distance (issue 4, test_sphere_robust.cpp):
+// few ulps of r at any distance:
 //  - the closest approach f + b d is formed with fused multiply-adds, so the
 //    products b d, as large as the distance, are not rounded before they
 //    cancel against f;
@@ -42,7 +42,7 @@ struct Sphere {
         const Lanes<T> disc = discriminant(ray, f, b);
         // No ray of the packet meets the sphere: skip the square root and the
         // division. (Most packets, for most spheres.)
-        const LaneMask<T> meets = (disc >= T(0)) & (t_max > t_min);
+        const LaneInts<T> meets = (disc >= T(0)) & (t_max > t_min);
         if (none(meets)) return splat(kInfinity<T>);
         const T r2 = radius * radius;
         // c = |f|^2 - r^2 is zero, as far as the arithmetic and the origin's own

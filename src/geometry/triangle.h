@@ -102,7 +102,7 @@ struct Triangle {
         const Lanes<T> u = orientation(bx2, by2, cx2, cy2);
         const Lanes<T> v = orientation(cx2, cy2, ax2, ay2);
         const Lanes<T> w = orientation(ax2, ay2, bx2, by2);
-        const LaneMask<T> outside = ((u < T(0)) | (v < T(0)) | (w < T(0))) &
+        const LaneInts<T> outside = ((u < T(0)) | (v < T(0)) | (w < T(0))) &
                                     ((u > T(0)) | (v > T(0)) | (w > T(0)));
         // No ray of the packet passes: skip the division.
         if (all(outside | (t_max <= t_min))) return no_hit;

@@ -35,7 +35,7 @@ struct TriangleCluster {
     // starts inside it). A plain test is enough for a padded bound; the
     // robust one of Sphere costs more. The far root b + sqrt(disc) is ahead
     // when b > 0 or disc > b^2, which needs no square root.
-    FH_HOT_INLINE LaneMask<T> reaches(const RayPacket<T>& ray) const {
+    FH_HOT_INLINE LaneInts<T> reaches(const RayPacket<T>& ray) const {
         const Vec3Lanes<T> f = ray.origin - center;
         const Lanes<T> b = -dot(f, ray.direction);
         const Vec3Lanes<T> closest = f + b * ray.direction;
@@ -99,7 +99,7 @@ struct MaterialShading {
     bool glazed = false;  // a hit sends a reflection ray
     T reflectivity = 0;
     T exponent = 0;       // Phong
-    bool whole = true;    // exponent is whole and at most kWholePowerLimit
+    bool whole_exponent = true;  // the exponent is whole and at most kWholePowerLimit
 };
 
 // intensity * strength * (light colour (.) material colour), for one light and

@@ -15,7 +15,7 @@
 namespace fh {
 
 template <typename T>
-struct PacketHits {
+struct HitLanes {
     Lanes<T> t;           // the nearest hit's distance; 0 or infinity where none
     LaneInts<T> prim;     // its primitive id, or kNoHit
 };
@@ -23,11 +23,11 @@ struct PacketHits {
 // subset: the spheres and clusters that can be hit (FlatScene::everything,
 // or a tile's: render/tile_culling.h).
 template <typename T>
-FH_HOT_INLINE PacketHits<T> closest_hits(const FlatScene<T>& scene, const RayPacket<T>& ray,
-                                         const LaneMask<T>& active, const PrimitiveSubset& subset) {
-    PacketHits<T> h{select(active, splat(kInfinity<T>), splat(T(0))), LaneInts<T>{} + kNoHit};
+FH_HOT_INLINE HitLanes<T> closest_hits(const FlatScene<T>& scene, const RayPacket<T>& ray,
+                                         const LaneInts<T>& active, const PrimitiveSubset& subset) {
+    HitLanes<T> h{select(active, splat(kInfinity<T>), splat(T(0))), LaneInts<T>{} + kNoHit};
     auto keep = [&h](const Lanes<T>& t, int id) FH_HOT_LAMBDA {
-        const LaneMask<T> nearer = t < h.t;
+        const LaneInts<T> nearer = t < h.t;
         h.t = select(nearer, t, h.t);
         h.prim = select(nearer, LaneInts<T>{} + id, h.prim);
     };
@@ -48,9 +48,9 @@ FH_HOT_INLINE PacketHits<T> closest_hits(const FlatScene<T>& scene, const RayPac
 // Per lane: some surface lies in (0, t_max) along the ray. Stops as soon as
 // every active ray is blocked.
 template <typename T>
-FH_HOT_INLINE LaneMask<T> occluded(const FlatScene<T>& scene, const RayPacket<T>& ray,
-                                   const Lanes<T>& t_max, const LaneMask<T>& active) {
-    LaneMask<T> blocked = LaneMask<T>{};
+FH_HOT_INLINE LaneInts<T> occluded(const FlatScene<T>& scene, const RayPacket<T>& ray,
+                                   const Lanes<T>& t_max, const LaneInts<T>& active) {
+    LaneInts<T> blocked = LaneInts<T>{};
     Lanes<T> limit = select(active, t_max, splat(T(0)));  // 0 once a lane is blocked
     auto block = [&](const Lanes<T>& t) FH_HOT_LAMBDA {
         blocked |= t < limit;
@@ -75,7 +75,7 @@ FH_HOT_INLINE LaneMask<T> occluded(const FlatScene<T>& scene, const RayPacket<T>
 // same code as every other ray.
 template <typename T>
 Hit<T> closest_hit(const FlatScene<T>& scene, const Ray<T>& ray) {
-    const PacketHits<T> h = closest_hits(scene, RayPacket<T>::splat(ray), first_lanes<T>(1), scene.everything);
+    const HitLanes<T> h = closest_hits(scene, RayPacket<T>::splat(ray), first_lanes<T>(1), scene.everything);
     return h.prim[0] == kNoHit ? Hit<T>{} : scene.hit_of(h.t[0], int(h.prim[0]));
 }
 

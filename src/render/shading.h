@@ -47,34 +47,34 @@ public:
     // The colour of each active ray of a packet (unclamped); 0 in the others.
     // first_hits: the primitives the rays' first hits can be on (a tile's
     // camera rays); nullptr: any.
-    ColorLanes<T> trace(RayPacket<T> ray, LaneMask<T> active, RayCounts& counts,
+    ColorLanes<T> trace(RayPacket<T> ray, LaneInts<T> active, RayCounts& counts,
                         const PrimitiveSubset* first_hits = nullptr) const {
         const Lanes<T> zero = splat(T(0));
         const ColorLanes<T> black{zero, zero, zero};
         ColorLanes<T> colour = black;
         Lanes<T> weight = splat(T(1));
         for (int depth = 0;; ++depth) {
-            const PacketHits<T> h =
+            const HitLanes<T> h =
                 closest_hits(scene_, ray, active, depth == 0 && first_hits ? *first_hits : scene_.everything);
-            const LaneMask<T> hit = h.prim != kNoHit;
+            const LaneInts<T> hit = h.prim != kNoHit;
             ColorLanes<T> local = select(active & ~hit, background(ray.direction), black);
             if (none(hit)) {
                 colour += weight * local;
                 break;
             }
-            Hits hits;
-            surfaces(ray, h, hit, hits, local);
-            add_lights(ray, hits, hit, local, counts);
+            SurfaceLanes surface;
+            surfaces(ray, h, hit, surface, local);
+            add_lights(ray, surface, hit, local, counts);
             colour += weight * local;
             if constexpr (!kReflections) break;
             if (depth >= scene_.plan.max_depth) break;
-            active = hit & hits.glazed;
+            active = hit & surface.glazed;
             if (none(active)) break;
             counts.reflection += std::uint64_t(count(active));
-            weight *= hits.reflectivity;
+            weight *= surface.reflectivity;
             // Unit to rounding, as the direction and the normal are: no normalize needed.
             const Vec3Lanes<T>& d = ray.direction;
-            ray = {hits.origin, d - (T(2) * dot(d, hits.normal)) * hits.normal};
+            ray = {surface.origin, d - (T(2) * dot(d, surface.normal)) * surface.normal};
         }
         return colour;
     }
@@ -90,11 +90,11 @@ private:
     // reflectivity and material, no glazed bit, but a point and normal that
     // may be NaN (a ray from a sphere's centre) -- only steps masked by `hit`
     // or `lit` read those.
-    struct Hits {
+    struct SurfaceLanes {
         Vec3Lanes<T> point, normal;  // normal: unit, facing the ray
         Vec3Lanes<T> origin;         // where secondary rays start
         Lanes<T> reflectivity;
-        LaneMask<T> glazed;
+        LaneInts<T> glazed;
         LaneInts<T> material;
     };
 
@@ -104,11 +104,11 @@ private:
     // for the others, which blend theirs in: a packet that sees one
     // primitive -- most do -- blends nothing.
     template <typename Fn>
-    static FH_HOT_INLINE void for_each_distinct(const LaneInts<T>& ids, LaneMask<T> mask, Fn&& fn) {
+    static FH_HOT_INLINE void for_each_distinct(const LaneInts<T>& ids, LaneInts<T> mask, Fn&& fn) {
         auto next = [&](auto first) FH_HOT_LAMBDA {
             int lane = 0;
             while (mask[lane] == 0) ++lane;
-            const LaneMask<T> same = mask & (ids == ids[lane]);
+            const LaneInts<T> same = mask & (ids == ids[lane]);
             fn(int(ids[lane]), same, first);
             mask &= ~same;
         };
@@ -119,19 +119,19 @@ private:
 
     // dst = value in the lanes, or everywhere on the first call.
     template <typename First, typename V>
-    static FH_HOT_INLINE void put(V& dst, const V& value, const LaneMask<T>& lanes, First) {
+    static FH_HOT_INLINE void put(V& dst, const V& value, const LaneInts<T>& lanes, First) {
         if constexpr (First::value) dst = value;
         else dst = select(lanes, value, dst);
     }
 
     // Hit points, facing normals, secondary-ray origins, material terms; the
     // ambient term goes straight into local (lanes with a hit only).
-    FH_HOT_INLINE void surfaces(const RayPacket<T>& ray, const PacketHits<T>& h,
-                                const LaneMask<T>& hit, Hits& s, ColorLanes<T>& local) const {
+    FH_HOT_INLINE void surfaces(const RayPacket<T>& ray, const HitLanes<T>& h,
+                                const LaneInts<T>& hit, SurfaceLanes& s, ColorLanes<T>& local) const {
         const Lanes<T> zero = splat(T(0));
         const Vec3Lanes<T> p = ray.at(select(hit, h.t, zero));
         ColorLanes<T> ambient;
-        for_each_distinct(h.prim, hit, [&](int prim, const LaneMask<T>& lanes, auto first) FH_HOT_LAMBDA {
+        for_each_distinct(h.prim, hit, [&](int prim, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
             const PrimitiveSurface<T>& surface = scene_.surfaces[size_t(prim)];
             Vec3Lanes<T> point, normal;
             surface.project(p, point, normal);
@@ -140,7 +140,7 @@ private:
             const MaterialShading<T>& m = scene_.shading[size_t(surface.material)];
             put(ambient, Vec3Lanes<T>::splat(m.ambient), lanes, first);
             put(s.reflectivity, splat(m.reflectivity), lanes, first);
-            put(s.glazed, m.glazed ? lanes : LaneMask<T>{}, lanes, first);
+            put(s.glazed, m.glazed ? lanes : LaneInts<T>{}, lanes, first);
             put(s.material, LaneInts<T>{} + surface.material, lanes, first);
         });
         local += select(hit, ambient, Vec3Lanes<T>{zero, zero, zero});
@@ -148,7 +148,7 @@ private:
         s.origin = offset_origin(s.point, s.normal);
     }
 
-    void add_lights(const RayPacket<T>& ray, const Hits& s, const LaneMask<T>& hit,
+    void add_lights(const RayPacket<T>& ray, const SurfaceLanes& s, const LaneInts<T>& hit,
                     ColorLanes<T>& local, RayCounts& counts) const {
         const size_t materials = scene_.shading.size();
         for (size_t l = 0; l < scene_.directional_lights.size(); ++l) {
@@ -164,14 +164,14 @@ private:
     // Diffuse and specular of one light (report 8.2-8.3): the light's sample
     // at each point (direction, distance, intensity) and its colour products
     // with each material.
-    FH_HOT_INLINE void add_light(const RayPacket<T>& ray, const Hits& s, const LaneMask<T>& hit,
+    FH_HOT_INLINE void add_light(const RayPacket<T>& ray, const SurfaceLanes& s, const LaneInts<T>& hit,
                                  const LightSample<T>& light, const LightTerms<T>* terms,
                                  ColorLanes<T>& local, RayCounts& counts) const {
         const Lanes<T> zero = splat(T(0));
         const Lanes<T> n_dot_l = dot(s.normal, light.to_light);
         // Faces away or gets nothing: no diffuse, no specular, no shadow ray.
         // (intensity >= 0, so one product tests both.)
-        LaneMask<T> lit = hit & (light.intensity * n_dot_l > T(0));
+        LaneInts<T> lit = hit & (light.intensity * n_dot_l > T(0));
         if (none(lit)) return;
         if constexpr (kShadowRays) {
             counts.shadow += std::uint64_t(count(lit));
@@ -182,14 +182,14 @@ private:
         // its Phong exponent. (Unlit lanes: some material's, masked below.)
         ColorLanes<T> kd, ks;
         Lanes<T> exponent;
-        LaneMask<T> whole;
-        for_each_distinct(s.material, lit, [&](int m, const LaneMask<T>& lanes, auto first) FH_HOT_LAMBDA {
+        LaneInts<T> whole;
+        for_each_distinct(s.material, lit, [&](int m, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
             put(kd, Vec3Lanes<T>::splat(terms[m].diffuse), lanes, first);
             put(ks, Vec3Lanes<T>::splat(terms[m].specular), lanes, first);
             if constexpr (kSpecularTerm) {
                 const MaterialShading<T>& material = scene_.shading[size_t(m)];
                 put(exponent, splat(material.exponent), lanes, first);
-                put(whole, material.whole ? lanes : LaneMask<T>{}, lanes, first);
+                put(whole, material.whole_exponent ? lanes : LaneInts<T>{}, lanes, first);
             }
         });
         // A select, not a product with 0: an unlit lane may hold NaN.

@@ -26,9 +26,9 @@ inline std::uint8_t to_byte(double v) { return std::uint8_t(std::floor(v + 0.5))
 // The clamped colour of each sample (SPEC section 4), lane by lane; a sample
 // that came out NaN or infinite is counted and contributes black.
 template <typename T>
-FH_HOT_INLINE ColorLanes<T> clamp_samples(const ColorLanes<T>& c, const LaneMask<T>& active,
+FH_HOT_INLINE ColorLanes<T> clamp_samples(const ColorLanes<T>& c, const LaneInts<T>& active,
                                           RayCounts& counts) {
-    const LaneMask<T> ok = finite(c.x) & finite(c.y) & finite(c.z);
+    const LaneInts<T> ok = finite(c.x) & finite(c.y) & finite(c.z);
     counts.nonfinite_samples += std::uint64_t(fh::count(active & ~ok));
     auto clamp = [&ok](const Lanes<T>& v) FH_HOT_LAMBDA {
         return select(ok, min(max(v, splat(T(0))), splat(T(255))), splat(T(0)));
@@ -50,7 +50,7 @@ void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1
             const int n = std::min(W, x1 - x);
             // Lanes past the row's end repeat its last pixel, inactive.
             const Lanes<T> px = min(T(x) + lane, splat(T(x + n - 1))) + T(0.5);
-            const LaneMask<T> active = first_lanes<T>(n);
+            const LaneInts<T> active = first_lanes<T>(n);
             counts.primary += std::uint64_t(n);
             const ColorLanes<T> c = clamp_samples(
                 shader.trace(camera.generate(px, splat(T(y) + T(0.5))), active, counts, visible), active,
@@ -107,7 +107,7 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
                 sy[i] = sy[i - 1];
             }
         }
-        const LaneMask<T> active = first_lanes<T>(n);
+        const LaneInts<T> active = first_lanes<T>(n);
         counts.primary += std::uint64_t(n);
         const ColorLanes<T> c = clamp_samples(
             shader.trace(camera.generate(load(sx), load(sy)), active, counts, visible), active, counts);

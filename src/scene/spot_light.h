@@ -48,7 +48,7 @@ struct SpotLight {
         const Vec3Lanes<T> delta = position - p;
         const Lanes<T> d2 = dot(delta, delta);
         // At the light's own position the direction is undefined: no light.
-        const LaneMask<T> defined = (d2 > T(0)) & (d2 < kInfinity<T>);
+        const LaneInts<T> defined = (d2 > T(0)) & (d2 < kInfinity<T>);
         const Lanes<T> inv_distance = select(defined, T(1) / sqrt(d2), splat(T(0)));
         LightSample<T> r;
         r.distance = d2 * inv_distance;
@@ -56,7 +56,7 @@ struct SpotLight {
         // Rounding can push the cosine just past +-1, outside acos's domain.
         const Lanes<T> cos_theta = min(splat(T(1)), max(splat(T(-1)), -dot(r.to_light, axis)));
         const Lanes<T> theta = acos_fast(cos_theta);
-        const LaneMask<T> inside = theta <= widest_angle;
+        const LaneInts<T> inside = theta <= widest_angle;
         // Right next to the light, d^2 can be so small (subnormal) that I / d^2
         // overflows to infinity. Capped at sqrt(max): finite, with room for the
         // colour products, and saturating every pixel it reaches anyway.

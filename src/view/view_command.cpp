@@ -1,4 +1,4 @@
-// firsthit view FILE: the report's window (issue 9). Shows a scene's or
+// firsthit view FILE: the report's window. Shows a scene's or
 // movie's frame, refined progressively (a quarter-resolution image at once,
 // then full resolution); P switches between orthographic and perspective,
 // Left/Right/Home/End move through a movie, Space plays it at its fps, S saves

@@ -1,4 +1,4 @@
-// firsthit frames --shard auto (issue 10): the shard from a Slurm job array's
+// firsthit frames --shard auto: the shard from a Slurm job array's
 // or a Kubernetes Indexed Job's environment gives the same frames, byte for
 // byte, as one run; a missing or bad environment is a usage error.
 #include <gtest/gtest.h>

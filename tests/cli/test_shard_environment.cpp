@@ -1,4 +1,4 @@
-// --shard auto (issue 10): the shard from a Slurm job array's or a Kubernetes
+// --shard auto: the shard from a Slurm job array's or a Kubernetes
 // Indexed Job's environment.
 #include <gtest/gtest.h>
 

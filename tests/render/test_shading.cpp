@@ -138,11 +138,11 @@ TEST(FlatScene, WholePhongExponentsTakeSquareAndMultiply) {
     const auto report = FlatScene<double>::build(s, plan_effects(s, Effects{}, 5));
     EXPECT_FALSE(report.fractional_exponents);
     EXPECT_EQ(report.exponent_bits, 7);  // 100 = 0b1100100
-    for (const auto& m : report.shading) EXPECT_TRUE(m.whole);
+    for (const auto& m : report.shading) EXPECT_TRUE(m.whole_exponent);
     s.materials[0].phong_exponent = 2.5;
     const auto fractional = FlatScene<double>::build(s, plan_effects(s, Effects{}, 5));
     EXPECT_TRUE(fractional.fractional_exponents);
-    EXPECT_FALSE(fractional.shading[0].whole);
+    EXPECT_FALSE(fractional.shading[0].whole_exponent);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Shared pieces of the robustness battery (issue 4): the two scalar types,
+// Shared pieces of the robustness battery: the two scalar types,
 // small scenes built in code, rendering with either precision, and the
 // "no non-finite sample" check every rendered scene goes through (item 11).
 #pragma once
@@ -24,7 +24,7 @@ constexpr Precision precision_of() {
 }
 
 // Sanitizer builds run the slowest loops of the battery with fewer rays.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__) || defined(__SANITIZE_THREAD__)
 inline constexpr bool kSanitized = true;
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)

@@ -1,4 +1,4 @@
-// Issue 4, item 7: `up` parallel to the view direction gives a valid basis by
+// `up` parallel to the view direction gives a valid basis by
 // the documented rule of scene/camera.h (the coordinate axis least aligned with
 // the view direction stands in for `up`), with no NaN anywhere in the image;
 // a zero-length look_at is an input error.

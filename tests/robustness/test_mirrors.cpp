@@ -1,4 +1,4 @@
-// Issue 4, item 9: two facing mirrors. Every reflection ray finds the other
+// Two facing mirrors. Every reflection ray finds the other
 // mirror, so only max_depth ends the chain: exactly max_depth reflection rays
 // per primary ray, and a finite colour equal to the geometric series.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Issue 4, item 3: rays parallel to a plane, lying in it, and nearly parallel
+// Rays parallel to a plane, lying in it, and nearly parallel
 // (n.d ~ 1e-8): no hit, no NaN, no infinite t. Also for the triangle, whose
 // plane the same rays can lie in.
 #include <gtest/gtest.h>

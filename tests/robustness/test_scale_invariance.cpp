@@ -1,4 +1,4 @@
-// Issue 4, item 10: the report's scene scaled by 1000 and moved by
+// The report's scene scaled by 1000 and moved by
 // (1e4, 1e4, 1e4), camera too, renders the same picture.
 //
 // The transform x -> 1000 x + (1e4, 1e4, 1e4) is applied to every position

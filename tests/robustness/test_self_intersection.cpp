@@ -1,4 +1,4 @@
-// Issue 4, item 6: no shadow acne. A plane and a sphere lit by directional
+// No shadow acne. A plane and a sphere lit by directional
 // lights (one steep, one grazing at 2 degrees), at scales 1e-3 .. 1e5 and
 // moved far from the origin, for shadow rays and reflection rays.
 //

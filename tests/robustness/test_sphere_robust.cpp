@@ -1,4 +1,4 @@
-// Issue 4, items 1 and 2: the sphere far away (hit or miss right at the
+// The sphere far away (hit or miss right at the
 // silhouette, accurate t) and rays starting inside, on, or tangent to it.
 // The truth is computed in long double from the exact float/double values
 // the tracer is given (origin, centre, its rounded unit direction).

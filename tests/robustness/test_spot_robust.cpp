@@ -1,4 +1,4 @@
-// Issue 4, item 8: the spot light's intensity is finite and continuous at its
+// The spot light's intensity is finite and continuous at its
 // hard points: theta exactly at max_angle, a point at the light's position,
 // cosines that round to just above 1, and max_angle >= pi.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# slurm.job_array (issue 10): a real one-node Slurm cluster on this machine.
+# slurm.job_array: a real one-node Slurm cluster on this machine.
 #
 # Starts munged, slurmctld and slurmd, each configured in a temporary folder
 # (own MUNGE key and socket, free local ports, state, spool and logs there),

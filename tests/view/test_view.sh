@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# view.window (issue 9): `firsthit view` in a real window, on a private Xvfb
+# view.window: `firsthit view` in a real window, on a private Xvfb
 # server (Mesa's software OpenGL), driven by xdotool.
 #
 #   bash tests/view/test_view.sh FIRSTHIT SOURCE_DIR
