@@ -15,8 +15,7 @@
 #include "cli/job.h"
 #include "cli/stats_output.h"
 #include "io/input_error.h"
-#include "render/image_compare.h"
-#include "render/render.h"
+#include "render/accuracy_sweep.h"
 
 namespace fh {
 
@@ -41,16 +40,6 @@ rays traced and the error against the reference (RMSE, PSNR, worst pixel).
 
 namespace {
 
-struct Row {
-    std::string setting;
-    RenderSettings settings;
-    double ms = 0;
-    std::uint64_t rays = 0;
-    size_t refined = 0;
-    ImageError error;     // against the reference
-    ImageError isolated;  // depth and precision rows: against a 1-sample reference
-};
-
 std::string number(double v) {
     if (std::isinf(v)) return "inf";
     std::ostringstream s;
@@ -59,15 +48,15 @@ std::string number(double v) {
     return s.str();
 }
 
-void write_csv(std::ostream& out, const std::vector<Row>& rows) {
+void write_csv(std::ostream& out, const std::vector<AccuracyRow>& rows) {
     out << "setting,spp,adaptive,depth,precision,ms,rays,rmse,psnr,max_error,refined_pixels,"
            "isolated_rmse,isolated_psnr\n";
-    for (const Row& r : rows) {
+    for (const AccuracyRow& r : rows) {
         const RenderSettings& s = r.settings;
-        out << r.setting << "," << (s.adaptive ? s.adaptive_samples : s.samples_per_pixel) << ","
+        out << r.knob << "," << (s.adaptive ? s.adaptive_samples : s.samples_per_pixel) << ","
             << (s.adaptive ? 1 : 0) << "," << s.max_depth << "," << precision_name(s.precision)
             << "," << number(r.ms) << "," << r.rays << "," << number(r.error.rmse) << ","
-            << number(r.error.psnr) << "," << r.error.max_error << "," << r.refined << ","
+            << number(r.error.psnr) << "," << r.error.max_error << "," << r.refined_pixels << ","
             << number(r.isolated.rmse) << "," << number(r.isolated.psnr) << "\n";
     }
 }
@@ -114,75 +103,23 @@ int run_accuracy(const Words& words) {
                              {"--max-spp"}});
     const Args args = Args::parse("accuracy", words, spec);
     const Job job = load_job_from(args);
-    const int runs = args.integer("--runs", 3, 1, 1000);
-    const int ref_spp = args.integer("--reference-spp", 256, 1, Limits::max_samples_per_pixel);
-    const int max_spp = args.integer("--max-spp", 64, 1, Limits::max_samples_per_pixel);
+    AccuracyOptions options;
+    options.runs = args.integer("--runs", 3, 1, 1000);
+    options.reference_spp = args.integer("--reference-spp", 256, 1, Limits::max_samples_per_pixel);
+    options.max_spp = args.integer("--max-spp", 64, 1, Limits::max_samples_per_pixel);
     ThreadPool pool(args.integer("--threads", 0, 0, 1024));
-    auto render = [&](const RenderSettings& s) {
-        return render_frame(job.scene(), job.camera, s, &pool);
-    };
 
-    // The reference: deep enough that one more level of glazing changes nothing.
-    RenderSettings ref = job.settings();
-    ref.precision = Precision::float64;
-    ref.adaptive = false;
-    ref.samples_per_pixel = 1;
-    ref.max_depth = 16;
-    for (; ref.max_depth < Limits::max_depth; ref.max_depth *= 2) {
-        RenderSettings deeper = ref;
-        deeper.max_depth = std::min(Limits::max_depth, ref.max_depth * 2);
-        if (render(ref).image.rgb == render(deeper).image.rgb) break;
-    }
-    // Depth and precision are also measured against this one sample
-    // reference, which isolates their own error from the aliasing of one sample.
-    const FrameResult one_sample = render(ref);
-    ref.samples_per_pixel = ref_spp;
-    std::cerr << "accuracy: reference " << ref_spp << " samples per pixel, depth " << ref.max_depth
-              << ", double\n";
-    const FrameResult reference = render(ref);
-
-    std::vector<Row> rows;
-    const ImageError exact = compare_images(reference.image, reference.image);
-    rows.push_back({"reference", ref, reference.render_ms, reference.counts.total(), 0, exact, exact});
     const bool tty = isatty(STDERR_FILENO);
-    auto measure = [&](const std::string& name, const RenderSettings& s) {
-        std::vector<double> ms;
-        FrameResult r;
-        for (int i = 0; i < runs; ++i) {
-            r = render(s);
-            ms.push_back(r.render_ms);
-        }
-        const ImageError error = compare_images(r.image, reference.image);
-        const bool sampling = name == "spp" || name == "adaptive";
-        rows.push_back({name, s, median(ms), r.counts.total(), r.refined_pixels, error,
-                        sampling ? error : compare_images(r.image, one_sample.image)});
-        if (tty) std::cerr << "\raccuracy: " << rows.size() - 1 << " settings measured" << std::flush;
-    };
-    RenderSettings base = job.settings();
-    base.adaptive = false;
-    base.precision = Precision::float64;
-    base.samples_per_pixel = 1;
-    for (int spp = 1; spp <= max_spp; spp *= 2) {
-        RenderSettings s = base;
-        s.samples_per_pixel = spp;
-        measure("spp", s);
-    }
-    for (int spp = 2; spp <= max_spp; spp *= 2) {
-        RenderSettings s = base;
-        s.adaptive = true;
-        s.adaptive_samples = spp;
-        measure("adaptive", s);
-    }
-    for (int depth = 0; depth <= 8; ++depth) {
-        RenderSettings s = base;
-        s.max_depth = depth;
-        measure("depth", s);
-    }
-    for (Precision p : {Precision::float32, Precision::float64}) {
-        RenderSettings s = base;
-        s.precision = p;
-        measure("precision", s);
-    }
+    const AccuracyReport report = sweep_accuracy(
+        job.scene(), job.camera, job.settings(), options, pool,
+        [&](int depth) {
+            std::cerr << "accuracy: reference " << options.reference_spp << " samples per pixel, depth " << depth
+                      << ", double\n";
+        },
+        [&](int rows) {
+            if (tty) std::cerr << "\raccuracy: " << rows << " settings measured" << std::flush;
+        });
+    const std::vector<AccuracyRow>& rows = report.rows;
     if (tty) std::cerr << "\n";
 
     const auto csv = args.value("--csv");

@@ -5,6 +5,7 @@
 #include "cli/commands.h"
 #include "cli/job.h"
 #include "cli/stats_output.h"
+#include "pipeline/frame_pipeline.h"
 
 namespace fh {
 
@@ -30,14 +31,9 @@ int run_bench(const Words& words) {
     const Args args = Args::parse("bench", words, spec);
     const Job job = load_job_from(args);
     const int runs = args.integer("--runs", 7, 1, 10000);
-    ThreadPool pool(args.integer("--threads", 0, 0, 1024));
-
-    FrameResult r = render_frame(job.scene(), job.camera, job.settings(), &pool);  // warm-up
-    std::vector<double> ms;
-    for (int i = 0; i < runs; ++i) {
-        r = render_frame(job.scene(), job.camera, job.settings(), &pool);
-        ms.push_back(r.render_ms);
-    }
+    const FrameTimings timings = time_frame(job, runs, args.integer("--threads", 0, 0, 1024));
+    const std::vector<double>& ms = timings.ms;
+    const FrameResult& r = timings.last;
     const double ms_median = median(ms);
     const auto [ms_min, ms_max] = std::minmax_element(ms.begin(), ms.end());
     std::cout << "file: " << job.file << "\n";
@@ -45,7 +41,7 @@ int run_bench(const Words& words) {
     std::cout << "width: " << job.camera.width << "\n"
               << "height: " << job.camera.height << "\n"
               << "precision: " << precision_name(job.settings().precision) << "\n"
-              << "threads: " << pool.size() << "\n"
+              << "threads: " << timings.threads << "\n"
               << "runs: " << runs << "\n"
               << "ms_per_frame: " << ms_median << "\n"
               << "ms_min: " << *ms_min << "\n"

@@ -1,14 +1,11 @@
 // firsthit render FILE: one frame to PNG.
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
-#include <mutex>
 
 #include "cli/commands.h"
-#include "pipeline/interrupt.h"
 #include "cli/job.h"
 #include "cli/stats_output.h"
-#include "io/png_writer.h"
+#include "pipeline/frame_pipeline.h"
 
 namespace fh {
 
@@ -56,28 +53,8 @@ int run_render(const Words& words) {
     const int threads = args.integer("--threads", 0, 0, 1024);
     std::string out = args.value("-o").value_or(args.value("--output").value_or(""));
     if (out.empty()) out = default_output(job);
-    check_output_file(out);  // before rendering: a bad place is bad input
-
-    // SIGINT/SIGTERM: stop at once, but never in the middle of writing the
-    // file (so no temporary is left behind).
-    std::mutex write_mutex;
-    bool written = false;
-    const InterruptWatch watch(std::chrono::milliseconds(0), [&](int sig) {
-        write_mutex.lock();  // held until the process ends
-        if (written) {       // too late to stop: the run ends normally
-            write_mutex.unlock();
-            return;
-        }
-        std::cerr << "firsthit: interrupted; nothing written\n";
-        std::_Exit(128 + sig);
-    });
-    ThreadPool pool(threads);
-    const FrameResult r = render_frame(job.scene(), job.camera, job.settings(), &pool);
-    {
-        const std::lock_guard lock(write_mutex);
-        write_png(out, r.image);
-        written = true;
-    }
+    const StillResult still = render_to_file(job, out, threads);
+    const FrameResult& r = still.frame;
     if (args.has("--stats")) {
         std::cout << "file: " << job.file << "\n";
         if (job.frame >= 0) std::cout << "frame: " << job.frame << "\n";
@@ -86,7 +63,7 @@ int run_render(const Words& words) {
                   << "height: " << job.camera.height << "\n"
                   << "samples_per_pixel: " << job.settings().samples_per_pixel << "\n"
                   << "precision: " << precision_name(job.settings().precision) << "\n"
-                  << "threads: " << pool.size() << "\n";
+                  << "threads: " << still.threads << "\n";
         print_plan(std::cout, r.plan);
         print_counts(std::cout, r.counts);
         std::cout << "render_ms: " << r.render_ms << "\n"

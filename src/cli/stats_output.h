@@ -10,12 +10,6 @@
 
 namespace fh {
 
-// The median of timings: what bench and accuracy report.
-inline double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
-}
-
 inline void print_counts(std::ostream& out, const RayCounts& c) {
     out << "rays.primary: " << c.primary << "\n"
         << "rays.shadow: " << c.shadow << "\n"

@@ -1,6 +1,7 @@
 #include "pipeline/frame_pipeline.h"
 
 #include <atomic>
+#include <cstdio>
 #include <cstdlib>
 #include <mutex>
 #include <shared_mutex>
@@ -81,6 +82,39 @@ FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, 
     summary.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (interrupted()) summary.interrupt_signal = interrupt_signal();
     return summary;
+}
+
+StillResult render_to_file(const Job& job, const std::string& path, int threads) {
+    check_output_file(path);  // before rendering: a bad place is bad input
+    std::mutex write_mutex;
+    bool written = false;
+    const InterruptWatch watch(std::chrono::milliseconds(0), [&](int sig) {
+        write_mutex.lock();  // held until the process ends
+        if (written) {       // too late to stop: the run ends normally
+            write_mutex.unlock();
+            return;
+        }
+        std::fputs("firsthit: interrupted; nothing written\n", stderr);
+        std::_Exit(128 + sig);
+    });
+    ThreadPool pool(threads);
+    StillResult r{render_frame(job.scene(), job.camera, job.settings(), &pool), pool.size()};
+    const std::lock_guard lock(write_mutex);
+    write_png(path, r.frame.image);
+    written = true;
+    return r;
+}
+
+FrameTimings time_frame(const Job& job, int runs, int threads) {
+    ThreadPool pool(threads);
+    FrameTimings t;
+    t.threads = pool.size();
+    t.last = render_frame(job.scene(), job.camera, job.settings(), &pool);  // warm-up
+    for (int i = 0; i < runs; ++i) {
+        t.last = render_frame(job.scene(), job.camera, job.settings(), &pool);
+        t.ms.push_back(t.last.render_ms);
+    }
+    return t;
 }
 
 }  // namespace fh

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "anim/movie.h"
+#include "pipeline/job.h"
 #include "io/raw_video_writer.h"
 #include "render/render.h"
 
@@ -59,5 +60,25 @@ struct FramesSummary {
 // raw video with resume.
 FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, const FramesRequest& request,
                             FramesObserver& observer);
+
+// The job's frame rendered on `threads` workers (0: one per core) and
+// written to `path` as PNG, whole or not at all. The place is checked before
+// rendering (InputError). SIGINT/SIGTERM during the render ends the process
+// at once with 128 + signal and nothing written; during the write, the
+// write finishes first.
+struct StillResult {
+    FrameResult frame;
+    int threads = 0;  // the workers it ran on
+};
+StillResult render_to_file(const Job& job, const std::string& path, int threads);
+
+// The job's frame rendered `runs` times after a warm-up run (bench): each
+// run's milliseconds, and the last run's result.
+struct FrameTimings {
+    std::vector<double> ms;
+    FrameResult last;
+    int threads = 0;
+};
+FrameTimings time_frame(const Job& job, int runs, int threads);
 
 }  // namespace fh

@@ -1,7 +1,10 @@
-// Counts of what a render traced, per worker and then summed.
+// Counts of what a render traced, per worker and then summed; the median of
+// timings.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <vector>
 
 namespace fh {
 
@@ -21,5 +24,11 @@ struct RayCounts {
         return *this;
     }
 };
+
+// The median of timings: what bench and accuracy report.
+inline double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
+}
 
 }  // namespace fh
