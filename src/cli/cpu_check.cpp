@@ -8,6 +8,10 @@
 
 #include <cstring>
 
+#ifndef FIRSTHIT_CPU_NEEDS
+#define FIRSTHIT_CPU_NEEDS ""  // names, space-separated: what -march turned on
+#endif
+
 namespace {
 
 void say(const char* s) {
@@ -17,84 +21,35 @@ void say(const char* s) {
 __attribute__((constructor(101))) void check_cpu() {
 #if defined(__x86_64__)
     __builtin_cpu_init();
-    char missing[512] = "";
-    auto need = [&](bool has, const char* name) {
-        if (has) return;
-        std::strcat(missing, " ");
-        std::strcat(missing, name);
+    struct Feature {
+        const char* name;
+        bool present;
     };
-    // One line per feature: __builtin_cpu_supports takes only a literal.
-#define FH_NEED(macro, name) need(__builtin_cpu_supports(name), name)
-#ifdef FIRSTHIT_NEEDS_SSE4_2
-    FH_NEED(SSE4_2, "sse4.2");
-#endif
-#ifdef FIRSTHIT_NEEDS_POPCNT
-    FH_NEED(POPCNT, "popcnt");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX
-    FH_NEED(AVX, "avx");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX2
-    FH_NEED(AVX2, "avx2");
-#endif
-#ifdef FIRSTHIT_NEEDS_FMA
-    FH_NEED(FMA, "fma");
-#endif
-#ifdef FIRSTHIT_NEEDS_BMI
-    FH_NEED(BMI, "bmi");
-#endif
-#ifdef FIRSTHIT_NEEDS_BMI2
-    FH_NEED(BMI2, "bmi2");
-#endif
-#ifdef FIRSTHIT_NEEDS_F16C
-    FH_NEED(F16C, "f16c");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX512F
-    FH_NEED(AVX512F, "avx512f");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX512BW
-    FH_NEED(AVX512BW, "avx512bw");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX512CD
-    FH_NEED(AVX512CD, "avx512cd");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX512DQ
-    FH_NEED(AVX512DQ, "avx512dq");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX512VL
-    FH_NEED(AVX512VL, "avx512vl");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX512VBMI
-    FH_NEED(AVX512VBMI, "avx512vbmi");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX512VBMI2
-    FH_NEED(AVX512VBMI2, "avx512vbmi2");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX512IFMA
-    FH_NEED(AVX512IFMA, "avx512ifma");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX512VNNI
-    FH_NEED(AVX512VNNI, "avx512vnni");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX512BITALG
-    FH_NEED(AVX512BITALG, "avx512bitalg");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX512VPOPCNTDQ
-    FH_NEED(AVX512VPOPCNTDQ, "avx512vpopcntdq");
-#endif
-#ifdef FIRSTHIT_NEEDS_AVX512BF16
-    FH_NEED(AVX512BF16, "avx512bf16");
-#endif
-#ifdef FIRSTHIT_NEEDS_GFNI
-    FH_NEED(GFNI, "gfni");
-#endif
-#ifdef FIRSTHIT_NEEDS_VAES
-    FH_NEED(VAES, "vaes");
-#endif
-#ifdef FIRSTHIT_NEEDS_VPCLMULQDQ
-    FH_NEED(VPCLMULQDQ, "vpclmulqdq");
-#endif
-#undef FH_NEED
+    // __builtin_cpu_supports takes only a literal: one entry per name.
+#define FH_FEATURE(name) {name, __builtin_cpu_supports(name) != 0}
+    const Feature features[] = {
+        FH_FEATURE("sse4.2"),       FH_FEATURE("popcnt"),       FH_FEATURE("avx"),
+        FH_FEATURE("avx2"),         FH_FEATURE("fma"),          FH_FEATURE("bmi"),
+        FH_FEATURE("bmi2"),         FH_FEATURE("f16c"),         FH_FEATURE("avx512f"),
+        FH_FEATURE("avx512bw"),     FH_FEATURE("avx512cd"),     FH_FEATURE("avx512dq"),
+        FH_FEATURE("avx512vl"),     FH_FEATURE("avx512vbmi"),   FH_FEATURE("avx512vbmi2"),
+        FH_FEATURE("avx512ifma"),   FH_FEATURE("avx512vnni"),   FH_FEATURE("avx512bitalg"),
+        FH_FEATURE("avx512vpopcntdq"), FH_FEATURE("avx512bf16"), FH_FEATURE("gfni"),
+        FH_FEATURE("vaes"),         FH_FEATURE("vpclmulqdq"),
+    };
+#undef FH_FEATURE
+    char missing[512] = "";
+    const char* needs = FIRSTHIT_CPU_NEEDS;
+    while (*needs) {
+        const size_t n = std::strcspn(needs, " ");
+        for (const Feature& f : features)
+            if (!f.present && std::strlen(f.name) == n && std::strncmp(f.name, needs, n) == 0 &&
+                std::strlen(missing) + n + 2 < sizeof missing) {
+                std::strcat(missing, " ");
+                std::strcat(missing, f.name);
+            }
+        needs += n + (needs[n] == ' ');
+    }
     if (missing[0] == '\0') return;
     say("firsthit: error: this binary was built for " FIRSTHIT_ARCH " but this CPU lacks");
     say(missing);
