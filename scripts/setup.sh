@@ -24,6 +24,6 @@ if [[ ${#missing[@]} -gt 0 ]]; then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release -DFIRSTHIT_ARCH="${FIRSTHIT_ARCH:-native}" >/dev/null
+cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release -DFIRSTHIT_ARCH="${FIRSTHIT_ARCH:-host}" >/dev/null
 cmake --build "$here/build" -j "$(nproc)"
 echo "setup: built $here/build/firsthit"

@@ -181,9 +181,9 @@ Background start_slow_frames(const fs::path& dir, const fs::path& out) {
 }
 
 TEST(InterruptCli, SlowFramesInFlightAreAbandonedWithinASecond) {
-    // Each frame takes seconds (4096 samples per pixel): the run does not
+    // Each frame takes seconds (192 x 192 pixels at 4096 samples): the run does not
     // wait for them, writes nothing and still stops within a second.
-    const fs::path dir = movie_dir("slow", 64, 4096);
+    const fs::path dir = movie_dir("slow", 192, 4096);
     const fs::path out = dir / "out";
     const Background b = start_slow_frames(dir, out);
     ASSERT_GT(b.pid, 0);
@@ -199,7 +199,7 @@ TEST(InterruptCli, SlowFramesInFlightAreAbandonedWithinASecond) {
 }
 
 TEST(InterruptCli, SecondSignalStopsAtOnce) {
-    const fs::path dir = movie_dir("twice", 64, 4096);
+    const fs::path dir = movie_dir("twice", 192, 4096);
     const fs::path out = dir / "out";
     const Background b = start_slow_frames(dir, out);
     ASSERT_GT(b.pid, 0);
