@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Every test once more under AddressSanitizer and UndefinedBehaviorSanitizer
-#: builds firsthit and the tests in build-asan/ and runs CTest there.
+# Every test once more under AddressSanitizer and UndefinedBehaviorSanitizer:
+# builds firsthit and the tests in build-asan/ (for x86-64-v2: the SSE width,
+# 16-byte packets) and runs CTest there.
 # Any memory error, leak or undefined behaviour fails the test it happens in.
 # The slowest loop of the robustness battery (a million rays at the
 # tetrahedron's edges) runs a quarter of its rays there.

@@ -2,7 +2,6 @@
 // (double, 256 samples per pixel, depth 16, or deeper where 16 has not
 // converged), then sweeps each knob, and reports time, rays and error against
 // the reference per setting, as a CSV and a plot.
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -13,7 +12,6 @@
 
 #include "cli/commands.h"
 #include "cli/job.h"
-#include "cli/stats_output.h"
 #include "io/input_error.h"
 #include "render/accuracy_sweep.h"
 
@@ -102,7 +100,7 @@ int run_accuracy(const Words& words) {
     spec.insert(spec.end(), {{"--csv"}, {"--plot"}, {"--runs"}, {"--threads"}, {"--reference-spp"},
                              {"--max-spp"}});
     const Args args = Args::parse("accuracy", words, spec);
-    const Job job = load_job_from(args);
+    const Job job = job_from_args(args);
     AccuracyOptions options;
     options.runs = args.integer("--runs", 3, 1, 1000);
     options.reference_spp = args.integer("--reference-spp", 256, 1, Limits::max_samples_per_pixel);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/closest_match.h"
+#include "io/parse_int.h"
 
 namespace fh {
 
@@ -33,8 +34,6 @@ private:
     std::map<std::string, std::string> values_;
 };
 
-// Parses "N" as an int in [min, max], else throws UsageError naming `what`.
-int parse_int(const std::string& text, const std::string& what, int min, int max);
 
 
 }  // namespace fh

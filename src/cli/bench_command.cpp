@@ -29,7 +29,7 @@ int run_bench(const Words& words) {
     auto spec = job_flags();
     spec.insert(spec.end(), {{"--threads"}, {"--runs"}});
     const Args args = Args::parse("bench", words, spec);
-    const Job job = load_job_from(args);
+    const Job job = job_from_args(args);
     const int runs = args.integer("--runs", 7, 1, 10000);
     const FrameTimings timings = time_frame(job, runs, args.integer("--threads", 0, 0, 1024));
     const std::vector<double>& ms = timings.ms;

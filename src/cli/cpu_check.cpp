@@ -53,7 +53,7 @@ __attribute__((constructor(101))) void check_cpu() {
     if (missing[0] == '\0') return;
     say("firsthit: error: this binary was built for " FIRSTHIT_ARCH " but this CPU lacks");
     say(missing);
-    say("; rebuild it here, or for every node with cmake -DFIRSTHIT_ARCH=x86-64-v2 (any x86-64 CPU)\n");
+    say("; rebuild it here, or for every node with cmake -DFIRSTHIT_ARCH=x86-64-v2 (SSE4.2: any x86-64 CPU since about 2009)\n");
     _exit(1);
 #endif
 }

@@ -124,11 +124,14 @@ int run_frames(const Words& words) {
         load_scene(file);
         throw UsageError(file + " is not a movie file (a movie file has a 'scene:' key)");
     }
-    const Job job = load_job({file, std::nullopt, std::nullopt});
+    JobRequest what;
+    what.file = file;
+    what.check_cameras = false;  // after the frame flags, as their errors come first
+    const Job job = load_job(what);
 
     FramesRequest request;
     request.frames = selected_frames(args, job.movie.frame_count());
-    print_warnings(job);
+    for (const std::string& warning : check_movie_cameras(file, job.movie)) std::cerr << warning << "\n";
     RenderSettings settings = job.movie.settings;
     apply_quality_flags(args, settings);
     request.threads = args.integer("--threads", 0, 0, 1024);

@@ -5,7 +5,7 @@
 #include "anim/frame_selection.h"
 #include "anim/movie.h"
 #include "cli/commands.h"
-#include "cli/job.h"
+#include "cli/args.h"
 #include "io/input_error.h"
 #include "io/movie_loader.h"
 #include "io/scene_loader.h"

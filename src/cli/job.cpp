@@ -1,6 +1,5 @@
 #include "cli/job.h"
 
-#include <climits>
 #include <cstdlib>
 #include <iostream>
 
@@ -39,12 +38,12 @@ void print_warnings(const Job& job) {
     for (const std::string& w : job.warnings) std::cerr << w << "\n";
 }
 
-Job load_job_from(const Args& args) {
+Job job_from_args(const Args& args, const char* movie_camera_note) {
     if (args.positional().size() != 1)
         throw UsageError("expected one FILE (a scene or movie file), got " +
                          std::to_string(args.positional().size()));
-    JobRequest request{args.positional()[0], args.value("--camera"), std::nullopt};
-    if (args.has("--frame")) request.frame = args.integer("--frame", 0, INT_MIN, INT_MAX);
+    JobRequest request{args.positional()[0], args.value("--camera"), args.value("--frame")};
+    if (movie_camera_note) request.movie_camera_note = movie_camera_note;
     Job job = load_job(request);
     print_warnings(job);
     apply_quality_flags(args, job.movie.settings);

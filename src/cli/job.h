@@ -11,12 +11,13 @@
 
 namespace fh {
 
-// The flags load_job_from reads.
+// The flags job_from_args reads.
 std::vector<FlagSpec> job_flags();
 
 // One positional FILE, --camera and --frame: the loaded job (its warnings
 // printed to stderr), with the quality flags applied to job.movie.settings.
-Job load_job_from(const Args& args);
+// movie_camera_note: the command's own words after "FILE is a movie (".
+Job job_from_args(const Args& args, const char* movie_camera_note = nullptr);
 
 // --spp, --depth, --precision, --adaptive, --aa-* and --no-prune on top of
 // the file's settings.

@@ -49,7 +49,7 @@ int run_render(const Words& words) {
     auto spec = job_flags();
     spec.insert(spec.end(), {{"--threads"}, {"--stats", false}, {"-o"}, {"--output"}});
     const Args args = Args::parse("render", words, spec);
-    const Job job = load_job_from(args);
+    const Job job = job_from_args(args);
     const int threads = args.integer("--threads", 0, 0, 1024);
     std::string out = args.value("-o").value_or(args.value("--output").value_or(""));
     if (out.empty()) out = default_output(job);

@@ -7,9 +7,6 @@
 #include <string>
 #include <vector>
 
-// For the callers, not this header: the commands that write PNGs also check
-// output places and remove stale temporaries, and include only png_writer.h.
-#include "io/atomic_file.h"
 #include "render/image.h"
 
 namespace fh {

@@ -2,8 +2,7 @@
 // bytes each), what an encoder reads with `ffmpeg -f rawvideo -pix_fmt rgb24
 // -s WxH -i -`, or converted to yuv420p (io/yuv420.h) by the worker that
 // rendered the frame. `make movies` pipes `firsthit frames --raw-video -`
-// into ffmpeg, so encoding runs while frames are rendered instead of after
-//.
+// into ffmpeg, so encoding runs while frames are rendered instead of after.
 //
 // Workers finish frames a little out of order; each frame is held until all
 // before it are written, and a worker that gets too far ahead waits, so at

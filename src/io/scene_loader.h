@@ -17,15 +17,16 @@ namespace fh {
 
 class YamlReader;
 
-// Loads a scene file. Unreadable file, YAML syntax error or any bad value:
-// InputError. Normals and light directions come out unit length; a plane's
-// distance is rescaled with its normal so it stays the same plane.
 // A scene file: the scene it describes and the render settings it asks for
 // (its `render:` and `effects:` blocks).
 struct SceneFile {
     Scene scene;
     RenderSettings settings;
 };
+
+// Loads a scene file. Unreadable file, YAML syntax error or any bad value:
+// InputError. Normals and light directions come out unit length; a plane's
+// distance is rescaled with its normal so it stays the same plane.
 
 SceneFile load_scene(const std::string& path);
 

@@ -23,7 +23,7 @@ constexpr int kRawVideoWindow = 8;
 FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, const FramesRequest& request,
                             FramesObserver& observer) {
     if (request.raw_video && request.resume)
-        throw UsageError("--raw-video streams whole runs of frames: not with --shard or --resume");
+        throw UsageError("raw video streams whole runs of frames: not with resume");
     const std::filesystem::path& out = request.folder;
     const int n = movie.frame_count();
     prepare_output_folder(out.string());

@@ -3,6 +3,7 @@
 #include "io/closest_match.h"
 #include "io/input_error.h"
 #include "io/movie_loader.h"
+#include "io/parse_int.h"
 #include "io/scene_loader.h"
 
 namespace fh {
@@ -45,15 +46,11 @@ Job load_job(const JobRequest& request) {
     job.is_movie_file = is_movie_file(job.file);
     if (job.is_movie_file) {
         if (request.camera)
-            throw UsageError("--camera applies to scene files; " + job.file +
-                             " is a movie (its camera is set in the file)");
+            throw UsageError("--camera applies to scene files; " + job.file + " is a movie (" +
+                             request.movie_camera_note + ")");
         job.movie = load_movie(job.file);
-        const int n = job.movie.frame_count();
-        job.frame = request.frame.value_or(0);
-        if (job.frame < 0 || job.frame > n - 1)
-            throw UsageError("--frame must be in [0, " + std::to_string(n - 1) + "], got " +
-                             std::to_string(job.frame));
-        job.warnings = check_movie_cameras(job.file, job.movie);
+        job.frame = request.frame ? parse_int(*request.frame, "--frame", 0, job.movie.frame_count() - 1) : 0;
+        if (request.check_cameras) job.warnings = check_movie_cameras(job.file, job.movie);
         job.camera = camera_at(job.movie, job.frame);
         return job;
     }

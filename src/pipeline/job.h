@@ -14,13 +14,19 @@ namespace fh {
 struct JobRequest {
     std::string file;
     std::optional<std::string> camera;  // scene files only: a camera's name
-    std::optional<int> frame;           // movie files only: the frame (default 0)
+    std::optional<std::string> frame;   // movie files only: the frame, as typed (default 0)
+    // Check the movie's camera at every frame now (check_movie_cameras);
+    // `frames` does it itself, after its own flags are checked.
+    bool check_cameras = true;
+    // Said after "--camera applies to scene files; FILE is a movie (...)".
+    std::string movie_camera_note = "its camera is set in the file";
 };
 
 struct Job {
     std::string file;
-    // The file's scene and settings. A scene file loads as a still: no paths,
-    // the picked camera, one frame.
+    // The file's scene and settings, and how they change from frame to
+    // frame. A scene file loads as a still movie: no paths, the picked
+    // camera, one frame.
     Movie movie;
     bool is_movie_file = false;
     int frame = -1;        // movie files: the picked frame; -1 for a scene file

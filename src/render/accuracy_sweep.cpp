@@ -28,7 +28,6 @@ AccuracyReport sweep_accuracy(const Scene& scene, const Camera& camera, const Re
     const FrameResult reference = render(ref);
 
     AccuracyReport report;
-    report.reference_depth = ref.max_depth;
     std::vector<AccuracyRow>& rows = report.rows;
     const ImageError exact = compare_images(reference.image, reference.image);
     rows.push_back({"reference", ref, reference.render_ms, reference.counts.total(), 0, exact, exact});

@@ -33,8 +33,7 @@ struct AccuracyRow {
 };
 
 struct AccuracyReport {
-    int reference_depth = 0;  // the glazing depth at which the reference converged
-    std::vector<AccuracyRow> rows;
+    std::vector<AccuracyRow> rows;  // the reference first
 };
 
 // `started_reference` is told the reference's depth before it is rendered;

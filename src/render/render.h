@@ -27,10 +27,10 @@ FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderS
                          ThreadPool* pool);
 // In T (float or double), whatever settings.precision says.
 template <typename T>
-FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                         ThreadPool* pool);
-extern template FrameResult render_frame<float>(const Scene&, const Camera&, const RenderSettings&, ThreadPool*);
-extern template FrameResult render_frame<double>(const Scene&, const Camera&, const RenderSettings&, ThreadPool*);
+FrameResult render_frame_as(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                            ThreadPool* pool);
+extern template FrameResult render_frame_as<float>(const Scene&, const Camera&, const RenderSettings&, ThreadPool*);
+extern template FrameResult render_frame_as<double>(const Scene&, const Camera&, const RenderSettings&, ThreadPool*);
 
 inline constexpr int kTileSize = 16;
 

@@ -182,14 +182,14 @@ private:
         // its Phong exponent. (Unlit lanes: some material's, masked below.)
         ColorLanes<T> kd, ks;
         Lanes<T> exponent;
-        LaneInts<T> whole;
+        LaneInts<T> whole_exponent;
         for_each_distinct(s.material, lit, [&](int m, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
             put(kd, Vec3Lanes<T>::splat(terms[m].diffuse), lanes, first);
             put(ks, Vec3Lanes<T>::splat(terms[m].specular), lanes, first);
             if constexpr (kSpecularTerm) {
                 const MaterialShading<T>& material = scene_.shading[size_t(m)];
                 put(exponent, splat(material.exponent), lanes, first);
-                put(whole, material.whole_exponent ? lanes : LaneInts<T>{}, lanes, first);
+                put(whole_exponent, material.whole_exponent ? lanes : LaneInts<T>{}, lanes, first);
             }
         });
         // A select, not a product with 0: an unlit lane may hold NaN.
@@ -206,7 +206,7 @@ private:
                 pow_whole_step(power, n_dot_h, left, bit);
             if (scene_.fractional_exponents)  // rare: std::pow where needed
                 for (int i = 0; i < kLanes<T>; ++i)
-                    if (lit[i] && !whole[i]) power[i] = std::pow(n_dot_h[i], exponent[i]);
+                    if (lit[i] && !whole_exponent[i]) power[i] = std::pow(n_dot_h[i], exponent[i]);
             specular = select(lit, light.intensity * power, zero);
         }
         local.x += diffuse * kd.x + specular * ks.x;

@@ -1,4 +1,4 @@
-// render_frame<T> (render/render.h) in one scalar type: the tiles, the
+// render_frame_as<T> (render/render.h) in one scalar type: the tiles, the
 // packets of camera rays, the pixels. Only render.cpp (double) and
 // render_float.cpp (float) include this, each compiling one precision's
 // shader variants -- the project's longest compile, split over two files so
@@ -138,8 +138,8 @@ inline int tile_pixels(int t, int width, int height, PixelRef* out) {
 }  // namespace detail
 
 template <typename T>
-FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                         ThreadPool* pool) {
+FrameResult render_frame_as(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                            ThreadPool* pool) {
     using namespace detail;
     const auto start = std::chrono::steady_clock::now();
     const FlatScene<T> flat = FlatScene<T>::build(
