@@ -11,6 +11,7 @@
 #include "io/input_error.h"
 #include "io/png_writer.h"
 #include "pipeline/interrupt.h"
+#include "render/prepared_scene.h"
 
 namespace fh {
 
@@ -51,13 +52,16 @@ FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, 
         std::_Exit(128 + sig);
     });
     ThreadPool pool(request.threads);
+    // The geometry and its BVH are the same for every frame: built once.
+    const PreparedScene prepared(movie.scene, settings, &pool);
+    summary.prepare_ms = prepared.build_ms();
     std::mutex counts_mutex;
     pool.parallel_for(summary.to_render, [&](int task, int) {
         if (interrupted()) return;
         const int i = frames[size_t(task)];
         FrameResult r;
         try {
-            r = render_frame(movie.scene, camera_at(movie, i), settings, nullptr);
+            r = prepared.render(camera_at(movie, i), nullptr);
             {
                 std::shared_lock lock(write_mutex);
                 write_png((out / frame_file_name(i, n)).string(), r.image);
@@ -98,7 +102,7 @@ StillResult render_to_file(const Job& job, const std::string& path, int threads)
         std::_Exit(128 + sig);
     });
     ThreadPool pool(threads);
-    StillResult r{render_frame(job.scene(), job.camera, job.settings(), &pool), pool.size()};
+    StillResult r{PreparedScene(job.scene(), job.settings(), &pool).render(job.camera, &pool), pool.size()};
     const std::lock_guard lock(write_mutex);
     write_png(path, r.frame.image);
     written = true;
@@ -109,9 +113,13 @@ FrameTimings time_frame(const Job& job, int runs, int threads) {
     ThreadPool pool(threads);
     FrameTimings t;
     t.threads = pool.size();
-    t.last = render_frame(job.scene(), job.camera, job.settings(), &pool);  // warm-up
+    const PreparedScene prepared(job.scene(), job.settings(), &pool);
+    t.prepare_ms = prepared.build_ms();
+    t.bvh_build_ms = prepared.bvh_build_ms();
+    t.bvh_nodes = prepared.bvh_nodes();
+    t.last = prepared.render(job.camera, &pool);  // warm-up
     for (int i = 0; i < runs; ++i) {
-        t.last = render_frame(job.scene(), job.camera, job.settings(), &pool);
+        t.last = prepared.render(job.camera, &pool);
         t.ms.push_back(t.last.render_ms);
     }
     return t;

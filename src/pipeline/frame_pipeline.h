@@ -48,6 +48,7 @@ public:
 };
 
 struct FramesSummary {
+    double prepare_ms = 0;  // flattening the scene and building its BVH, once
     int rendered = 0;
     int to_render = 0;  // the selection less the frames resume skipped
     double seconds = 0;
@@ -75,7 +76,10 @@ StillResult render_to_file(const Job& job, const std::string& path, int threads)
 // The job's frame rendered `runs` times after a warm-up run (bench): each
 // run's milliseconds, and the last run's result.
 struct FrameTimings {
-    std::vector<double> ms;
+    double prepare_ms = 0;    // flattening the scene and building its BVH, once
+    double bvh_build_ms = 0;  // of which the BVH
+    int bvh_nodes = 0;
+    std::vector<double> ms;   // rendering only
     FrameResult last;
     int threads = 0;
 };

@@ -16,32 +16,44 @@ LightTerms<T> terms(const Material<double>& m, const dvec3& light_color, double 
     return t;
 }
 
-// Bounding spheres of consecutive runs of the triangles the frame keeps,
-// computed in double and padded by a relative 1e-4 so that no rounding in
-// the tracer's precision can cull a ray that hits a triangle.
+// The boxes of the spheres, then of the triangles, computed in double and
+// padded by a relative 1e-5 so that no rounding in the tracer's precision
+// can put a hit outside its box.
+Aabb padded(Aabb b) {
+    const double pad = 1e-5 * (glm::length(b.hi - b.lo) + std::max(glm::length(b.lo), glm::length(b.hi)));
+    b.lo -= pad;
+    b.hi += pad;
+    return b;
+}
+std::vector<Aabb> bounds_of(const std::vector<Sphere<double>>& spheres,
+                            const std::vector<const Triangle<double>*>& triangles) {
+    std::vector<Aabb> boxes;
+    boxes.reserve(spheres.size() + triangles.size());
+    for (const auto& s : spheres) boxes.push_back(padded({s.center - s.radius, s.center + s.radius}));
+    for (const Triangle<double>* t : triangles) {
+        Aabb b;
+        b.grow(t->v0);
+        b.grow(t->v1);
+        b.grow(t->v2);
+        boxes.push_back(padded(b));
+    }
+    return boxes;
+}
+
+// The leaves of a small BVH as padded bounding spheres of their primitives'
+// boxes; none when it has more than kFewLeaves leaves.
 template <typename T>
-std::vector<TriangleCluster<T>> clusters_of(const std::vector<const Triangle<double>*>& tris) {
-    const int kept = int(tris.size());
-    std::vector<TriangleCluster<T>> out;
-    for (int first = 0; first < kept; first += kClusterSize) {
-        const int count = std::min(kClusterSize, kept - first);
-        dvec3 lo(kInfinity<double>), hi(-kInfinity<double>);
-        auto corners = [&](const Triangle<double>& t, auto&& fn) {
-            fn(t.v0);
-            fn(t.v1);
-            fn(t.v2);
-        };
-        for (int i = first; i < first + count; ++i)
-            corners(*tris[size_t(i)], [&](const dvec3& p) {
-                lo = glm::min(lo, p);
-                hi = glm::max(hi, p);
-            });
-        const dvec3 center = (lo + hi) * 0.5;
-        double r = 0;
-        for (int i = first; i < first + count; ++i)
-            corners(*tris[size_t(i)], [&](const dvec3& p) { r = std::max(r, glm::length(p - center)); });
+std::vector<LeafSphere<T>> few_leaves_of(const Bvh& bvh, const std::vector<Aabb>& boxes, int spheres) {
+    std::vector<LeafSphere<T>> out;
+    for (const BvhNode& n : bvh.nodes) {
+        if (!n.leaf()) continue;
+        if (out.size() == kFewLeaves) return {};
+        Aabb b;
+        for (int k = n.first; k < n.first + n.count; ++k) b.grow(boxes[size_t(bvh.prims[size_t(k)])]);
+        const dvec3 center = b.center();
+        double r = 0.5 * glm::length(b.hi - b.lo);
         r = r * (1 + 1e-4) + 1e-4 * max_abs_component(center) + 1e-30;
-        out.push_back({Vec3<T>(center), T(r * r), first, count});
+        out.push_back({Vec3<T>(center), T(r * r), n.first, n.count, n.count == 1 && bvh.prims[size_t(n.first)] < spheres});
     }
     return out;
 }
@@ -49,7 +61,7 @@ std::vector<TriangleCluster<T>> clusters_of(const std::vector<const Triangle<dou
 }  // namespace
 
 template <typename T>
-FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
+FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan, ThreadPool* pool) {
     FlatScene<T> f;
     f.plan = plan;
     const Effects& fx = plan.effects;
@@ -92,9 +104,10 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan) {
                                t.material});
         f.surfaces.push_back(surface_of(f.triangles.back()));
     }
-    f.clusters = clusters_of<T>(kept);
-    for (size_t i = 0; i < f.spheres.size(); ++i) f.everything.spheres.push_back(int(i));
-    for (size_t i = 0; i < f.clusters.size(); ++i) f.everything.clusters.push_back(int(i));
+    const std::vector<Aabb> boxes = bounds_of(scene.spheres, kept);
+    f.bvh = build_bvh(boxes, pool);
+    f.bvh_boxes = boxes_of<T>(f.bvh);
+    f.few_leaves = few_leaves_of<T>(f.bvh, boxes, int(scene.spheres.size()));
 
     if (!fx.diffuse && !fx.specular) return f;
     // One row of colour products per light, by material.

@@ -7,34 +7,41 @@
 #include <vector>
 
 #include "core/hit.h"
+#include "render/bvh_traversal.h"
 #include "render/effect_plan.h"
 #include "scene/scene.h"
 
 namespace fh {
 
-// Indices into FlatScene::spheres and FlatScene::clusters: the ones a packet
-// of rays tests.
+// The bounded primitives a tile's camera rays can hit (render/tile_culling.h),
+// as indices into the BVH's input (spheres, then triangles), in increasing
+// order. A short list is tested one by one, which for a few primitives is
+// faster than walking the BVH; past kMaxSubset the walk is used instead.
 struct PrimitiveSubset {
-    std::vector<int> spheres;
-    std::vector<int> clusters;
+    std::vector<int> prims;
+    bool walk_bvh = true;  // too many (or not culled): walk the BVH
 };
+inline constexpr size_t kMaxSubset = 16;
 
 // Primitive ids number the spheres, then the planes, then the (kept) triangles.
 inline constexpr int kNoHit = -1;
 
-// Up to kClusterSize consecutive triangles and a sphere that holds them all.
-// A packet none of whose rays meets the sphere skips the triangles: most
-// packets never come near the report's tetrahedron.
+// A BVH leaf as a padded bounding sphere, for scenes of few leaves
+// (FlatScene::few_leaves): the report's scene has four. Testing each leaf in
+// turn against its sphere needs no division and no walk, which for so few is
+// faster than the BVH's boxes (the same test the tracer used for its
+// triangles before it had a BVH).
 template <typename T>
-struct TriangleCluster {
+struct LeafSphere {
     Vec3<T> center;
     T radius2;  // padded so rounding never culls a real hit
-    int first, count;
+    int first, count;  // into bvh.prims
+    bool lone_sphere;  // the leaf is one sphere: test it, not its bound
 
-    // Per lane: the ray meets the bounding sphere ahead of its origin (or
-    // starts inside it). A plain test is enough for a padded bound; the
-    // robust one of Sphere costs more. The far root b + sqrt(disc) is ahead
-    // when b > 0 or disc > b^2, which needs no square root.
+    // Per lane: the ray meets the sphere ahead of its origin (or starts
+    // inside it). A plain test is enough for a padded bound; the robust one
+    // of Sphere costs more. The far root b + sqrt(disc) is ahead when b > 0
+    // or disc > b^2, which needs no square root.
     FH_HOT_INLINE LaneInts<T> reaches(const RayPacket<T>& ray) const {
         const Vec3Lanes<T> f = ray.origin - center;
         const Lanes<T> b = -dot(f, ray.direction);
@@ -43,7 +50,7 @@ struct TriangleCluster {
         return (disc >= T(0)) & ((b > T(0)) | (disc > b * b));
     }
 };
-inline constexpr int kClusterSize = 16;
+inline constexpr size_t kFewLeaves = 8;
 
 // Where a primitive's surface is: what shading needs to turn a hit into a
 // point and a normal.
@@ -115,8 +122,11 @@ struct FlatScene {
     std::vector<Sphere<T>> spheres;
     std::vector<Plane<T>> planes;
     std::vector<Triangle<T>> triangles;
-    std::vector<TriangleCluster<T>> clusters;  // covering the triangles in order
-    PrimitiveSubset everything;                // every sphere and cluster
+    // Over the spheres and triangles: index i < spheres.size() is sphere i,
+    // any other is triangle i - spheres.size().
+    Bvh bvh;
+    std::vector<NodeBox<T>> bvh_boxes;  // bvh.nodes' boxes in T
+    std::vector<LeafSphere<T>> few_leaves;  // when the BVH has at most kFewLeaves leaves
     std::vector<PrimitiveSurface<T>> surfaces;  // by primitive id
     std::vector<MaterialShading<T>> shading;    // by material
     std::vector<DirectionalLight<T>> directional_lights;
@@ -130,7 +140,8 @@ struct FlatScene {
     EffectPlan plan;
 
     // Only what the plan simulates: lights it uses, terms of its effects.
-    static FlatScene build(const Scene& scene, const EffectPlan& plan);
+    // pool: the BVH is built on it (nullptr: on the calling thread).
+    static FlatScene build(const Scene& scene, const EffectPlan& plan, ThreadPool* pool = nullptr);
 
     Hit<T> hit_of(T t, int prim) const {
         const int ns = int(spheres.size()), np = int(planes.size());

@@ -8,8 +8,10 @@
 // skipping a shape.
 #pragma once
 
+#include <limits>
 #include <optional>
 
+#include "render/bvh_traversal.h"
 #include "render/flat_scene.h"
 
 namespace fh {
@@ -20,28 +22,56 @@ struct HitLanes {
     LaneInts<T> prim;     // its primitive id, or kNoHit
 };
 
-// subset: the spheres and clusters that can be hit (FlatScene::everything,
-// or a tile's: render/tile_culling.h).
+// subset: what a tile's camera rays can hit (render/tile_culling.h), tested
+// one by one when it is short; nullptr or a long one: the BVH is walked.
 template <typename T>
 FH_HOT_INLINE HitLanes<T> closest_hits(const FlatScene<T>& scene, const RayPacket<T>& ray,
-                                         const LaneInts<T>& active, const PrimitiveSubset& subset) {
+                                         const LaneInts<T>& active, const PrimitiveSubset* subset = nullptr) {
     HitLanes<T> h{select(active, splat(kInfinity<T>), splat(T(0))), LaneInts<T>{} + kNoHit};
+    // On a tie the lower primitive id wins, whatever order the BVH visits
+    // them in: spheres before planes before triangles, triangles in file
+    // order. So each test looks a little past the nearest hit so far
+    // (`reach`), and keep decides.
     auto keep = [&h](const Lanes<T>& t, int id) FH_HOT_LAMBDA {
-        const LaneInts<T> nearer = t < h.t;
+        const LaneInts<T> nearer = (t < h.t) | ((t == h.t) & (h.prim > id));
         h.t = select(nearer, t, h.t);
         h.prim = select(nearer, LaneInts<T>{} + id, h.prim);
     };
+    auto reach = [&h]() FH_HOT_LAMBDA { return h.t * (T(1) + std::numeric_limits<T>::epsilon()); };
     const int spheres = int(scene.spheres.size()), planes = int(scene.planes.size());
-    for (const int i : subset.spheres) keep(scene.spheres[size_t(i)].intersect(ray, T(0), h.t), i);
-    for (int p = 0; p < planes; ++p) keep(scene.planes[size_t(p)].intersect(ray, T(0), h.t), spheres + p);
-    std::optional<RayBasis<T>> basis;  // built once a cluster is reached
-    for (const int i : subset.clusters) {
-        const TriangleCluster<T>& c = scene.clusters[size_t(i)];
-        if (none(c.reaches(ray) & (h.t > T(0)))) continue;
-        if (!basis) basis.emplace(ray);
-        for (int k = c.first; k < c.first + c.count; ++k)
-            keep(scene.triangles[size_t(k)].intersect(*basis, T(0), h.t), spheres + planes + k);
+    std::optional<RayBasis<T>> basis;  // built once a triangle is reached
+    if (subset && !subset->walk_bvh) {
+        // In increasing id order, so the first of equal hits is kept.
+        const std::vector<int>& list = subset->prims;
+        size_t k = 0;
+        for (; k < list.size() && list[k] < spheres; ++k)
+            keep(scene.spheres[size_t(list[k])].intersect(ray, T(0), h.t), list[k]);
+        for (int p = 0; p < planes; ++p) keep(scene.planes[size_t(p)].intersect(ray, T(0), h.t), spheres + p);
+        for (; k < list.size(); ++k) {
+            if (!basis) basis.emplace(ray);
+            keep(scene.triangles[size_t(list[k] - spheres)].intersect(*basis, T(0), h.t), planes + list[k]);
+        }
+        return h;
     }
+    for (int p = 0; p < planes; ++p) keep(scene.planes[size_t(p)].intersect(ray, T(0), reach()), spheres + p);
+    auto test_leaf = [&](int first, int count) FH_HOT_LAMBDA {
+        for (int k = first; k < first + count; ++k) {
+            const int i = scene.bvh.prims[size_t(k)];
+            if (i < spheres) {
+                keep(scene.spheres[size_t(i)].intersect(ray, T(0), reach()), i);
+            } else {
+                if (!basis) basis.emplace(ray);
+                keep(scene.triangles[size_t(i - spheres)].intersect(*basis, T(0), reach()), planes + i);
+            }
+        }
+        return false;
+    };
+    if (!scene.few_leaves.empty()) {
+        for (const LeafSphere<T>& leaf : scene.few_leaves)
+            if (leaf.lone_sphere || any(leaf.reaches(ray) & (h.t > T(0)))) test_leaf(leaf.first, leaf.count);
+        return h;
+    }
+    for_each_leaf(scene.bvh, scene.bvh_boxes.data(), ray, active, h.t, test_leaf);
     return h;
 }
 
@@ -57,17 +87,29 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatScene<T>& scene, const RayPacket<T>
         limit = select(blocked, splat(T(0)), limit);
         return all(blocked | ~active);
     };
-    for (const Sphere<T>& s : scene.spheres)
-        if (block(s.intersect(ray, T(0), limit))) return blocked;
     for (const Plane<T>& p : scene.planes)
         if (block(p.intersect(ray, T(0), limit))) return blocked;
-    std::optional<RayBasis<T>> basis;  // built once a cluster is reached
-    for (const TriangleCluster<T>& c : scene.clusters) {
-        if (none(c.reaches(ray) & (limit > T(0)))) continue;
-        if (!basis) basis.emplace(ray);
-        for (int k = c.first; k < c.first + c.count; ++k)
-            if (block(scene.triangles[size_t(k)].intersect(*basis, T(0), limit))) return blocked;
+    const int spheres = int(scene.spheres.size());
+    std::optional<RayBasis<T>> basis;  // built once a triangle is reached
+    auto test_leaf = [&](int first, int count) FH_HOT_LAMBDA {
+        for (int k = first; k < first + count; ++k) {
+            const int i = scene.bvh.prims[size_t(k)];
+            if (i < spheres) {
+                if (block(scene.spheres[size_t(i)].intersect(ray, T(0), limit))) return true;
+            } else {
+                if (!basis) basis.emplace(ray);
+                if (block(scene.triangles[size_t(i - spheres)].intersect(*basis, T(0), limit))) return true;
+            }
+        }
+        return false;
+    };
+    if (!scene.few_leaves.empty()) {
+        for (const LeafSphere<T>& leaf : scene.few_leaves)
+            if ((leaf.lone_sphere || any(leaf.reaches(ray) & (limit > T(0)))) && test_leaf(leaf.first, leaf.count))
+                return blocked;
+        return blocked;
     }
+    for_each_leaf(scene.bvh, scene.bvh_boxes.data(), ray, active, limit, test_leaf);
     return blocked;
 }
 
@@ -75,7 +117,7 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatScene<T>& scene, const RayPacket<T>
 // same code as every other ray.
 template <typename T>
 Hit<T> closest_hit(const FlatScene<T>& scene, const Ray<T>& ray) {
-    const HitLanes<T> h = closest_hits(scene, RayPacket<T>::splat(ray), first_lanes<T>(1), scene.everything);
+    const HitLanes<T> h = closest_hits(scene, RayPacket<T>::splat(ray), first_lanes<T>(1));
     return h.prim[0] == kNoHit ? Hit<T>{} : scene.hit_of(h.t[0], int(h.prim[0]));
 }
 

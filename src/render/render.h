@@ -22,15 +22,21 @@ struct FrameResult {
 
 // pool == nullptr renders on the calling thread only (the frame generator
 // runs one frame per worker that way).
-// In settings.precision's scalar type.
+// One frame in settings.precision's scalar type: the scene prepared for it
+// (render/prepared_scene.h) and rendered. Movies prepare once instead.
 FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,
                          ThreadPool* pool);
-// In T (float or double), whatever settings.precision says.
+
 template <typename T>
-FrameResult render_frame_as(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+struct FlatScene;
+// A frame of a scene already flattened into T (float or double).
+template <typename T>
+FrameResult render_frame_as(const FlatScene<T>& scene, const Camera& camera, const RenderSettings& settings,
                             ThreadPool* pool);
-extern template FrameResult render_frame_as<float>(const Scene&, const Camera&, const RenderSettings&, ThreadPool*);
-extern template FrameResult render_frame_as<double>(const Scene&, const Camera&, const RenderSettings&, ThreadPool*);
+extern template FrameResult render_frame_as<float>(const FlatScene<float>&, const Camera&, const RenderSettings&,
+                                                   ThreadPool*);
+extern template FrameResult render_frame_as<double>(const FlatScene<double>&, const Camera&,
+                                                    const RenderSettings&, ThreadPool*);
 
 inline constexpr int kTileSize = 16;
 

@@ -3,6 +3,7 @@
 
 namespace fh {
 
-template FrameResult render_frame_as<float>(const Scene&, const Camera&, const RenderSettings&, ThreadPool*);
+template FrameResult render_frame_as<float>(const FlatScene<float>&, const Camera&, const RenderSettings&,
+                                            ThreadPool*);
 
 }  // namespace fh

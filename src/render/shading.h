@@ -54,8 +54,7 @@ public:
         ColorLanes<T> colour = black;
         Lanes<T> weight = splat(T(1));
         for (int depth = 0;; ++depth) {
-            const HitLanes<T> h =
-                closest_hits(scene_, ray, active, depth == 0 && first_hits ? *first_hits : scene_.everything);
+            const HitLanes<T> h = closest_hits(scene_, ray, active, depth == 0 ? first_hits : nullptr);
             const LaneInts<T> hit = h.prim != kNoHit;
             ColorLanes<T> local = select(active & ~hit, background(ray.direction), black);
             if (none(hit)) {

@@ -1,5 +1,6 @@
 #include "render/tile_culling.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fh {
@@ -35,14 +36,46 @@ bool TileFrustum::may_hit(const dvec3& center, double radius) const {
 
 template <typename T>
 void cull_to_frustum(const FlatScene<T>& scene, const TileFrustum& frustum, PrimitiveSubset& out) {
-    out.spheres.clear();
-    out.clusters.clear();
-    for (size_t i = 0; i < scene.spheres.size(); ++i)
-        if (frustum.may_hit(dvec3(scene.spheres[i].center), double(scene.spheres[i].radius)))
-            out.spheres.push_back(int(i));
-    for (size_t i = 0; i < scene.clusters.size(); ++i)
-        if (frustum.may_hit(dvec3(scene.clusters[i].center), std::sqrt(double(scene.clusters[i].radius2))))
-            out.clusters.push_back(int(i));
+    out.prims.clear();
+    out.walk_bvh = false;
+    const Bvh& bvh = scene.bvh;
+    if (bvh.empty()) return;
+    const int spheres = int(scene.spheres.size());
+    // A box as its bounding sphere, a triangle as the sphere around its box.
+    auto box_may_hit = [&](const dvec3& lo, const dvec3& hi) {
+        return frustum.may_hit(0.5 * (lo + hi), 0.5 * glm::length(hi - lo));
+    };
+    int stack[160];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const BvhNode& n = bvh.nodes[size_t(stack[--top])];
+        if (!box_may_hit(dvec3(n.lo[0], n.lo[1], n.lo[2]), dvec3(n.hi[0], n.hi[1], n.hi[2]))) continue;
+        if (!n.leaf()) {
+            stack[top++] = n.first;
+            stack[top++] = n.second;
+            continue;
+        }
+        for (int k = n.first; k < n.first + n.count; ++k) {
+            const int i = bvh.prims[size_t(k)];
+            bool may = false;
+            if (i < spheres) {
+                may = frustum.may_hit(dvec3(scene.spheres[size_t(i)].center), double(scene.spheres[size_t(i)].radius));
+            } else {
+                const Triangle<T>& t = scene.triangles[size_t(i - spheres)];
+                const dvec3 a(t.v0), b(t.v1), c(t.v2);
+                may = box_may_hit(glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
+            }
+            if (!may) continue;
+            if (out.prims.size() == kMaxSubset) {  // too many to list: walk the BVH
+                out.prims.clear();
+                out.walk_bvh = true;
+                return;
+            }
+            out.prims.push_back(i);
+        }
+    }
+    std::sort(out.prims.begin(), out.prims.end());
 }
 
 template void cull_to_frustum(const FlatScene<float>&, const TileFrustum&, PrimitiveSubset&);

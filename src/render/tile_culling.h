@@ -1,7 +1,7 @@
 // Which primitives a tile's camera rays can hit. The camera rays through a
 // rectangle of the image lie inside the frustum of its four corner rays: a
 // pyramid from the eye (perspective) or a prism (orthographic). A sphere --
-// or a triangle cluster's bounding sphere -- farther than its radius outside
+// or the sphere around a BVH node's or a triangle's box -- farther than its radius outside
 // one of the frustum's four side planes is hit by none of them, so the
 // tile's first hits skip it: four plane tests per primitive per tile instead
 // of a test per packet. Planes, infinite, are always tested.
@@ -29,7 +29,9 @@ private:
     dvec3 normal_[4];  // unit, pointing inside
 };
 
-// The spheres and clusters of `scene` the frustum may hit, into `out`.
+// The spheres and triangles of `scene` the frustum may hit, into `out`: found
+// by walking the BVH with the frustum; more than kMaxSubset of them and
+// `out` says to walk the BVH per packet instead.
 template <typename T>
 void cull_to_frustum(const FlatScene<T>& scene, const TileFrustum& frustum, PrimitiveSubset& out);
 

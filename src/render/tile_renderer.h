@@ -138,12 +138,10 @@ inline int tile_pixels(int t, int width, int height, PixelRef* out) {
 }  // namespace detail
 
 template <typename T>
-FrameResult render_frame_as(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+FrameResult render_frame_as(const FlatScene<T>& flat, const Camera& camera, const RenderSettings& settings,
                             ThreadPool* pool) {
     using namespace detail;
     const auto start = std::chrono::steady_clock::now();
-    const FlatScene<T> flat = FlatScene<T>::build(
-        scene, plan_effects(scene, settings.effects, settings.max_depth, settings.prune));
     const CameraRays<T> camera_rays(camera);
     FrameResult result;
     result.image = Image(camera.width, camera.height);

@@ -1,0 +1,250 @@
+#include "render/bvh.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "render/thread_pool.h"
+
+namespace fh {
+
+namespace {
+
+constexpr int kBins = 16;
+// Ranges at least this large are split on the calling thread (their binning
+// spread over the pool); smaller ones become subtrees built one per worker.
+constexpr int kSubtreeSize = 32768;
+// Past this depth splits are by count: the traversal's stack stays bounded
+// whatever the input (coincident boxes give the heuristic nothing to split).
+constexpr int kMaxSahDepth = 96;
+// The cost of visiting a node against that of testing one primitive.
+constexpr double kTraversalCost = 4.0;
+
+float round_down(double v) {
+    float f = float(v);
+    if (double(f) > v) f = std::nextafter(f, -kInfinity<float>);
+    return f;
+}
+float round_up(double v) {
+    float f = float(v);
+    if (double(f) < v) f = std::nextafter(f, kInfinity<float>);
+    return f;
+}
+
+BvhNode node_with_box(const Aabb& b) {
+    BvhNode n;
+    for (int a = 0; a < 3; ++a) {
+        n.lo[a] = round_down(b.lo[a]);
+        n.hi[a] = round_up(b.hi[a]);
+    }
+    return n;
+}
+
+struct Bins {
+    Aabb box[3][kBins];
+    int count[3][kBins] = {};
+
+    void add(const Bins& o) {
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < kBins; ++b) {
+                box[a][b].grow(o.box[a][b]);
+                count[a][b] += o.count[a][b];
+            }
+    }
+};
+
+struct Split {
+    int axis = -1;
+    int bin = 0;  // primitives in bins < bin go left
+    double cost = kInfinity<double>;
+};
+
+// A subtree under construction: its nodes, and the slots of its parents
+// still waiting for a subtree built elsewhere.
+struct Pending {
+    int begin, end;
+    Aabb bounds, centroid_bounds;
+    int depth;
+    int parent, slot;  // nodes[parent].first (slot 0) or .second (slot 1)
+};
+
+class Builder {
+public:
+    Builder(const std::vector<Aabb>& boxes, const std::vector<dvec3>& centroids, std::vector<std::int32_t>& prims,
+            ThreadPool* pool)
+        : boxes_(boxes), centroids_(centroids), prims_(prims), pool_(pool) {}
+
+    // Builds [begin, end) into nodes (its root at the returned index); with
+    // defer, ranges smaller than kSubtreeSize go to `pending` instead.
+    int build(std::vector<BvhNode>& nodes, int begin, int end, const Aabb& bounds, const Aabb& centroids,
+              int depth, bool defer, std::vector<Pending>* pending, int parent = -1, int slot = 0) {
+        if (defer && end - begin < kSubtreeSize) {
+            pending->push_back({begin, end, bounds, centroids, depth, parent, slot});
+            return -1;
+        }
+        const int index = int(nodes.size());
+        nodes.push_back(node_with_box(bounds));
+        const int n = end - begin;
+        const Split split = depth < kMaxSahDepth ? best_split(begin, end, centroids, defer) : Split{};
+        const double leaf_cost = double(n);
+        const double split_cost =
+            split.axis < 0 ? kInfinity<double> : kTraversalCost + split.cost / std::max(bounds.half_area(), 1e-300);
+        if (n <= kMaxLeafSize && (split.axis < 0 || leaf_cost <= split_cost)) {
+            nodes[size_t(index)].first = begin;
+            nodes[size_t(index)].count = n;
+            return index;
+        }
+        int mid = split.axis < 0 ? begin : partition(begin, end, centroids, split);
+        if (mid == begin || mid == end) {  // no useful plane: halve by count
+            mid = begin + n / 2;
+            const int axis = widest_axis(centroids);
+            std::nth_element(prims_.begin() + begin, prims_.begin() + mid, prims_.begin() + end,
+                             [&](int a, int b) { return centroids_[size_t(a)][axis] < centroids_[size_t(b)][axis]; });
+        }
+        nodes[size_t(index)].axis = split.axis < 0 ? widest_axis(centroids) : split.axis;
+        Aabb lb, lc, rb, rc;
+        range_bounds(begin, mid, lb, lc);
+        range_bounds(mid, end, rb, rc);
+        const int left = build(nodes, begin, mid, lb, lc, depth + 1, defer, pending, index, 0);
+        const int right = build(nodes, mid, end, rb, rc, depth + 1, defer, pending, index, 1);
+        nodes[size_t(index)].first = left;
+        nodes[size_t(index)].second = right;
+        return index;
+    }
+
+    void range_bounds(int begin, int end, Aabb& bounds, Aabb& centroids) const {
+        for (int i = begin; i < end; ++i) {
+            bounds.grow(boxes_[size_t(prims_[size_t(i)])]);
+            centroids.grow(centroids_[size_t(prims_[size_t(i)])]);
+        }
+    }
+
+private:
+    static int widest_axis(const Aabb& b) {
+        const dvec3 d = b.hi - b.lo;
+        return d.x >= d.y && d.x >= d.z ? 0 : (d.y >= d.z ? 1 : 2);
+    }
+
+    static int bin_of(const dvec3& c, int axis, const Aabb& cb, double scale) {
+        return std::clamp(int((c[axis] - cb.lo[axis]) * scale), 0, kBins - 1);
+    }
+
+    void bin_range(int begin, int end, const Aabb& cb, const double scale[3], Bins& bins) const {
+        for (int i = begin; i < end; ++i) {
+            const int p = prims_[size_t(i)];
+            for (int a = 0; a < 3; ++a) {
+                if (scale[a] == 0) continue;
+                const int b = bin_of(centroids_[size_t(p)], a, cb, scale[a]);
+                bins.box[a][b].grow(boxes_[size_t(p)]);
+                ++bins.count[a][b];
+            }
+        }
+    }
+
+    // The cheapest of the 3 x 15 bin boundaries; the binning of a large range
+    // is spread over the pool.
+    Split best_split(int begin, int end, const Aabb& cb, bool parallel) const {
+        double scale[3];
+        for (int a = 0; a < 3; ++a) {
+            const double extent = cb.hi[a] - cb.lo[a];
+            scale[a] = extent > 0 ? kBins / extent : 0;
+        }
+        Bins bins;
+        const int n = end - begin;
+        if (parallel && pool_ && n >= 2 * kSubtreeSize) {
+            const int chunks = 4 * pool_->size();
+            std::vector<Bins> partial(static_cast<size_t>(chunks));
+            pool_->parallel_for(chunks, [&](int c, int) {
+                bin_range(begin + int(std::int64_t(n) * c / chunks), begin + int(std::int64_t(n) * (c + 1) / chunks),
+                          cb, scale, partial[size_t(c)]);
+            });
+            for (const Bins& b : partial) bins.add(b);
+        } else {
+            bin_range(begin, end, cb, scale, bins);
+        }
+        Split best;
+        for (int a = 0; a < 3; ++a) {
+            if (scale[a] == 0) continue;
+            // right[b]: the bins b .. kBins-1 together.
+            double right_area[kBins];
+            int right_count[kBins];
+            Aabb acc;
+            int count = 0;
+            for (int b = kBins - 1; b > 0; --b) {
+                acc.grow(bins.box[a][b]);
+                count += bins.count[a][b];
+                right_area[b] = acc.half_area();
+                right_count[b] = count;
+            }
+            acc = Aabb{};
+            count = 0;
+            for (int b = 1; b < kBins; ++b) {
+                acc.grow(bins.box[a][b - 1]);
+                count += bins.count[a][b - 1];
+                if (count == 0 || right_count[b] == 0) continue;
+                const double cost = acc.half_area() * count + right_area[b] * right_count[b];
+                if (cost < best.cost) best = {a, b, cost};
+            }
+        }
+        return best;
+    }
+
+    int partition(int begin, int end, const Aabb& cb, const Split& s) const {
+        const double scale = kBins / (cb.hi[s.axis] - cb.lo[s.axis]);
+        const auto mid = std::partition(prims_.begin() + begin, prims_.begin() + end, [&](int p) {
+            return bin_of(centroids_[size_t(p)], s.axis, cb, scale) < s.bin;
+        });
+        return int(mid - prims_.begin());
+    }
+
+    const std::vector<Aabb>& boxes_;
+    const std::vector<dvec3>& centroids_;
+    std::vector<std::int32_t>& prims_;
+    ThreadPool* pool_;
+};
+
+}  // namespace
+
+Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool) {
+    const auto start = std::chrono::steady_clock::now();
+    Bvh bvh;
+    std::vector<dvec3> centroids(boxes.size());
+    for (size_t i = 0; i < boxes.size(); ++i) {
+        centroids[i] = boxes[i].center();
+        if (!boxes[i].empty()) bvh.prims.push_back(std::int32_t(i));
+    }
+    if (bvh.prims.empty()) return bvh;
+    Builder builder(boxes, centroids, bvh.prims, pool);
+    Aabb bounds, centroid_bounds;
+    builder.range_bounds(0, int(bvh.prims.size()), bounds, centroid_bounds);
+
+    // The top of the tree here, the subtrees below kSubtreeSize on the pool,
+    // each into nodes of its own, then appended.
+    std::vector<Pending> pending;
+    builder.build(bvh.nodes, 0, int(bvh.prims.size()), bounds, centroid_bounds, 0, true, &pending);
+    std::vector<std::vector<BvhNode>> subtrees(pending.size());
+    auto build_subtree = [&](int k, int) {
+        const Pending& p = pending[size_t(k)];
+        builder.build(subtrees[size_t(k)], p.begin, p.end, p.bounds, p.centroid_bounds, p.depth, false, nullptr);
+    };
+    if (pool && pending.size() > 1) pool->parallel_for(int(pending.size()), build_subtree);
+    else for (int k = 0; k < int(pending.size()); ++k) build_subtree(k, 0);
+    for (size_t k = 0; k < pending.size(); ++k) {
+        const int offset = int(bvh.nodes.size());
+        for (BvhNode n : subtrees[k]) {
+            if (!n.leaf()) {
+                n.first += offset;
+                n.second += offset;
+            }
+            bvh.nodes.push_back(n);
+        }
+        if (pending[k].parent >= 0) {
+            BvhNode& parent = bvh.nodes[size_t(pending[k].parent)];
+            (pending[k].slot == 0 ? parent.first : parent.second) = offset;
+        }
+    }
+    bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return bvh;
+}
+
+}  // namespace fh

@@ -1,0 +1,67 @@
+// A bounding volume hierarchy over the scene's bounded primitives (spheres
+// and triangles; planes, unbounded, stay outside it): binary nodes with boxes,
+// split by the surface area heuristic over 16 bins, built on the thread pool.
+// Boxes are floats rounded outward from the double bounds, so a box always
+// holds its primitives in either tracer precision, at half the memory.
+// Traversal (render/bvh_traversal.h) walks it with whole packets of rays.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/vec.h"
+
+namespace fh {
+
+class ThreadPool;
+
+struct Aabb {
+    dvec3 lo{kInfinity<double>};
+    dvec3 hi{-kInfinity<double>};
+
+    void grow(const dvec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    void grow(const Aabb& b) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
+    bool empty() const { return !(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z); }
+    dvec3 center() const { return 0.5 * (lo + hi); }
+    // Half the surface area: what the heuristic compares.
+    double half_area() const {
+        if (empty()) return 0;
+        const dvec3 d = hi - lo;
+        return d.x * d.y + d.y * d.z + d.z * d.x;
+    }
+};
+
+struct BvhNode {
+    float lo[3], hi[3];  // rounded outward
+    // Leaf (count > 0): primitives Bvh::prims[first .. first + count).
+    // Inner (count == 0): children `first` and `second`.
+    std::int32_t first = 0;
+    std::int32_t second = 0;
+    std::int32_t count = 0;
+    std::int32_t axis = 0;  // inner: the split axis, for front-to-back order
+
+    bool leaf() const { return count > 0; }
+};
+
+struct Bvh {
+    std::vector<BvhNode> nodes;  // nodes[0] is the root (absent: nothing bounded)
+    std::vector<std::int32_t> prims;  // the input's indices, in leaf order
+    double build_ms = 0;
+
+    bool empty() const { return nodes.empty(); }
+};
+
+// Largest leaf; a leaf is made earlier where splitting costs more than it saves.
+inline constexpr int kMaxLeafSize = 8;
+
+// The hierarchy over boxes[0 .. n). Boxes that are empty (a degenerate input)
+// are left out. pool == nullptr builds on the calling thread.
+Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool);
+
+}  // namespace fh

@@ -1,0 +1,95 @@
+// Walking the BVH (render/bvh.h) with a whole packet: a node is entered when
+// any ray of the packet meets its box nearer than that ray's current limit
+// (its nearest hit so far, or a shadow ray's light), children nearest first
+// along the split axis as the packet's first active ray sees it. The box
+// test is the slab test, made conservative: zero direction components are
+// replaced by a tiny one of the same sign (no 0 * inf), and the far
+// distance is enlarged by 8 ulps, more than the rounding of the test
+// (Ize, "Robust BVH Ray Traversal", JCGT 2013), so rounding never culls a
+// box a ray really enters.
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include "core/packet.h"
+#include "render/bvh.h"
+
+namespace fh {
+
+// The packet's rays as the box test reads them.
+template <typename T>
+struct BoxRays {
+    Vec3Lanes<T> origin, inverse;
+    bool negative[3];  // the first active ray goes toward -x, -y, -z
+
+    FH_HOT_INLINE BoxRays(const RayPacket<T>& ray, const LaneInts<T>& active) : origin(ray.origin) {
+        constexpr T tiny = std::numeric_limits<T>::min() * T(1) / std::numeric_limits<T>::epsilon();
+        auto inverse_of = [](const Lanes<T>& d) FH_HOT_LAMBDA {
+            return T(1) / select(abs(d) < tiny, copysign(splat(tiny), d), d);
+        };
+        inverse = {inverse_of(ray.direction.x), inverse_of(ray.direction.y), inverse_of(ray.direction.z)};
+        int lane = 0;
+        while (lane < kLanes<T> - 1 && active[lane] == 0) ++lane;
+        negative[0] = ray.direction.x[lane] < 0;
+        negative[1] = ray.direction.y[lane] < 0;
+        negative[2] = ray.direction.z[lane] < 0;
+    }
+};
+
+// A node's box in the tracer's type: no conversion in the walk.
+template <typename T>
+struct NodeBox {
+    T lo[3], hi[3];
+};
+
+template <typename T>
+std::vector<NodeBox<T>> boxes_of(const Bvh& bvh) {
+    std::vector<NodeBox<T>> out;
+    out.reserve(bvh.nodes.size());
+    for (const BvhNode& n : bvh.nodes)
+        out.push_back({{T(n.lo[0]), T(n.lo[1]), T(n.lo[2])}, {T(n.hi[0]), T(n.hi[1]), T(n.hi[2])}});
+    return out;
+}
+
+// Per lane: the ray meets the node's box at a distance in [0, t_max].
+// Lanes with t_max <= 0 (inactive, or blocked shadow rays) never do.
+template <typename T>
+FH_HOT_INLINE LaneInts<T> enters(const NodeBox<T>& n, const BoxRays<T>& r, const Lanes<T>& t_max) {
+    const Lanes<T> x0 = (n.lo[0] - r.origin.x) * r.inverse.x, x1 = (n.hi[0] - r.origin.x) * r.inverse.x;
+    const Lanes<T> y0 = (n.lo[1] - r.origin.y) * r.inverse.y, y1 = (n.hi[1] - r.origin.y) * r.inverse.y;
+    const Lanes<T> z0 = (n.lo[2] - r.origin.z) * r.inverse.z, z1 = (n.hi[2] - r.origin.z) * r.inverse.z;
+    const Lanes<T> near = max(max(min(x0, x1), min(y0, y1)), max(min(z0, z1), splat(T(0))));
+    const Lanes<T> far =
+        min(min(max(x0, x1), max(y0, y1)), max(z0, z1)) * (T(1) + 8 * std::numeric_limits<T>::epsilon());
+    return (near <= far) & (near <= t_max) & (t_max > T(0));
+}
+
+// Calls leaf(first, count) for the leaves the packet enters, nearest first;
+// t_max is read anew at every node (the leaves shorten it). leaf returns
+// true to end the walk (every shadow ray blocked).
+template <typename T, typename Leaf>
+FH_HOT_INLINE void for_each_leaf(const Bvh& bvh, const NodeBox<T>* boxes, const RayPacket<T>& ray,
+                                 const LaneInts<T>& active, const Lanes<T>& t_max, Leaf&& leaf) {
+    if (bvh.empty()) return;
+    const BoxRays<T> rays(ray, active);
+    // Depth is bounded by the builder (SAH to depth 96, then halving).
+    int stack[160];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const int i = stack[--top];
+        if (none(enters(boxes[i], rays, t_max))) continue;
+        const BvhNode& n = bvh.nodes[size_t(i)];
+        if (n.leaf()) {
+            if (leaf(n.first, n.count)) return;
+            continue;
+        }
+        // Children split along n.axis: the second holds the larger coordinates.
+        const bool second_nearer = rays.negative[n.axis];
+        stack[top++] = second_nearer ? n.first : n.second;  // visited second
+        stack[top++] = second_nearer ? n.second : n.first;
+    }
+}
+
+}  // namespace fh

@@ -1,0 +1,245 @@
+// The BVH finds exactly what a loop over every primitive finds: the same
+// nearest hit (t and primitive, bit for bit) for a million random rays on
+// random soups of spheres and triangles, the same answer for shadow rays,
+// in float and double; and no ray slips through a closed mesh.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "render/bvh.h"
+#include "render/effect_plan.h"
+#include "render/flat_scene.h"
+#include "render/packet_intersect.h"
+#include "render/thread_pool.h"
+#include "robustness/robust_util.h"
+
+namespace fh {
+namespace {
+
+using robust::kSanitized;
+
+// A soup in the cube [-5, 5]^3: triangles of random size (from slivers to
+// a fifth of the cube) and spheres, with one material.
+Scene soup(int triangles, int spheres, unsigned seed) {
+    Scene s;
+    robust::add_material(s, "m", robust::material(dvec3(200), 0.2, 0.8, 0, 1));
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-5, 5), size(0.01, 2);
+    auto point = [&] { return dvec3(u(rng), u(rng), u(rng)); };
+    for (int i = 0; i < triangles; ++i) {
+        const dvec3 a = point(), d = size(rng) * glm::normalize(point()), e = size(rng) * glm::normalize(point());
+        s.triangles.push_back(Triangle<double>::make(a, a + d, a + e, 0));
+    }
+    for (int i = 0; i < spheres; ++i) s.spheres.push_back({point(), size(rng) * 0.5, 0});
+    return s;
+}
+
+// The nearest hits by testing every primitive, lowest id first on a tie:
+// the rule closest_hits keeps, whatever order its walk takes.
+template <typename T>
+HitLanes<T> brute_force_hits(const FlatScene<T>& f, const RayPacket<T>& ray, const LaneInts<T>& active) {
+    HitLanes<T> h{select(active, splat(kInfinity<T>), splat(T(0))), LaneInts<T>{} + kNoHit};
+    auto keep = [&](const Lanes<T>& t, int id) {
+        const LaneInts<T> nearer = (t < h.t) | ((t == h.t) & (h.prim > id));
+        h.t = select(nearer, t, h.t);
+        h.prim = select(nearer, LaneInts<T>{} + id, h.prim);
+    };
+    const RayBasis<T> basis(ray);
+    const int ns = int(f.spheres.size()), np = int(f.planes.size());
+    for (int i = 0; i < ns; ++i)
+        keep(f.spheres[size_t(i)].intersect(ray, T(0), h.t * (T(1) + std::numeric_limits<T>::epsilon())), i);
+    for (int i = 0; i < np; ++i)
+        keep(f.planes[size_t(i)].intersect(ray, T(0), h.t * (T(1) + std::numeric_limits<T>::epsilon())), ns + i);
+    for (int i = 0; i < int(f.triangles.size()); ++i)
+        keep(f.triangles[size_t(i)].intersect(basis, T(0), h.t * (T(1) + std::numeric_limits<T>::epsilon())),
+             ns + np + i);
+    return h;
+}
+
+template <typename T>
+LaneInts<T> brute_force_blocked(const FlatScene<T>& f, const RayPacket<T>& ray, const Lanes<T>& t_max,
+                                const LaneInts<T>& active) {
+    LaneInts<T> blocked{};
+    const Lanes<T> limit = select(active, t_max, splat(T(0)));
+    const RayBasis<T> basis(ray);
+    for (const auto& s : f.spheres) blocked |= s.intersect(ray, T(0), limit) < limit;
+    for (const auto& p : f.planes) blocked |= p.intersect(ray, T(0), limit) < limit;
+    for (const auto& t : f.triangles) blocked |= t.intersect(basis, T(0), limit) < limit;
+    return blocked & active;
+}
+
+template <typename T>
+class BvhAgainstBruteForce : public ::testing::Test {};
+using Precisions = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(BvhAgainstBruteForce, Precisions);
+
+// Rays of three kinds: from anywhere in any direction (mostly misses), aimed
+// at a random point of a random triangle, and aimed exactly at a triangle's
+// vertex or edge midpoint (where triangles tie).
+template <typename T>
+RayPacket<T> random_packet(const Scene& s, std::mt19937_64& rng, int kind) {
+    std::uniform_real_distribution<double> u(-8, 8), w(0, 1);
+    std::uniform_int_distribution<size_t> pick(0, s.triangles.size() - 1);
+    RayPacket<T> p;
+    for (int l = 0; l < kLanes<T>; ++l) {
+        const dvec3 o(u(rng), u(rng), u(rng));
+        dvec3 target(u(rng), u(rng), u(rng));
+        const Triangle<double>& t = s.triangles[pick(rng)];
+        if (kind == 1) {
+            double a = w(rng), b = w(rng);
+            if (a + b > 1) a = 1 - a, b = 1 - b;
+            target = t.v0 + a * (t.v1 - t.v0) + b * (t.v2 - t.v0);
+        } else if (kind == 2) {
+            const dvec3 corners[] = {t.v0, t.v1, t.v2, 0.5 * (t.v0 + t.v1), 0.5 * (t.v1 + t.v2)};
+            target = corners[pick(rng) % 5];
+        }
+        const Vec3<T> d = glm::normalize(Vec3<T>(target) - Vec3<T>(o));
+        p.origin.x[l] = T(o.x), p.origin.y[l] = T(o.y), p.origin.z[l] = T(o.z);
+        p.direction.x[l] = d.x, p.direction.y[l] = d.y, p.direction.z[l] = d.z;
+    }
+    return p;
+}
+
+TYPED_TEST(BvhAgainstBruteForce, SameNearestHitAndSameShadowsForAMillionRays) {
+    using T = TypeParam;
+    const Scene s = soup(400, 40, 7);
+    const auto f = FlatScene<T>::build(s, plan_effects(s, Effects{}, 5));
+    ASSERT_FALSE(f.bvh.empty());
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> len(0, 20);
+    const int packets = (kSanitized ? 1 << 16 : 1 << 20) / kLanes<T>;
+    long hits = 0, mismatches = 0, shadow_mismatches = 0;
+    for (int k = 0; k < packets; ++k) {
+        const RayPacket<T> ray = random_packet<T>(s, rng, k % 3);
+        const LaneInts<T> active = first_lanes<T>(kLanes<T> - (k % 4 == 0 ? 1 : 0));
+        const HitLanes<T> bvh = closest_hits(f, ray, active);
+        const HitLanes<T> all = brute_force_hits(f, ray, active);
+        Lanes<T> t_max;
+        for (int l = 0; l < kLanes<T>; ++l) t_max[l] = T(len(rng));
+        const LaneInts<T> blocked = occluded(f, ray, t_max, active) & active;
+        const LaneInts<T> expected = brute_force_blocked(f, ray, t_max, active);
+        for (int l = 0; l < kLanes<T>; ++l) {
+            hits += all.prim[l] != kNoHit;
+            mismatches += bvh.prim[l] != all.prim[l] || (all.prim[l] != kNoHit && bvh.t[l] != all.t[l]);
+            shadow_mismatches += (blocked[l] != 0) != (expected[l] != 0);
+        }
+    }
+    EXPECT_EQ(mismatches, 0);
+    EXPECT_EQ(shadow_mismatches, 0);
+    EXPECT_GT(hits, long(packets) * kLanes<T> / 2);  // the aimed rays hit: the test has teeth
+}
+
+// A unit icosphere subdivided three times (1280 triangles, closed): every
+// ray from inside it, and every ray aimed from outside at one of its
+// vertices or edge midpoints (where the ray meets several triangles at
+// once), must hit it.
+std::vector<Triangle<double>> icosphere(int subdivisions) {
+    const double g = (1 + std::sqrt(5.0)) / 2;
+    std::vector<dvec3> v = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                            {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    for (dvec3& p : v) p = glm::normalize(p);
+    std::vector<std::array<dvec3, 3>> faces;
+    const int f[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                          {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                          {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    for (const auto& t : f) faces.push_back({v[size_t(t[0])], v[size_t(t[1])], v[size_t(t[2])]});
+    for (int s = 0; s < subdivisions; ++s) {
+        std::vector<std::array<dvec3, 3>> next;
+        for (const auto& t : faces) {
+            const dvec3 a = glm::normalize(t[0] + t[1]), b = glm::normalize(t[1] + t[2]),
+                        c = glm::normalize(t[2] + t[0]);
+            next.push_back({t[0], a, c});
+            next.push_back({t[1], b, a});
+            next.push_back({t[2], c, b});
+            next.push_back({a, b, c});
+        }
+        faces = next;
+    }
+    std::vector<Triangle<double>> out;
+    for (const auto& t : faces) out.push_back(Triangle<double>::make(t[0], t[1], t[2], 0));
+    return out;
+}
+
+TYPED_TEST(BvhAgainstBruteForce, NoRayLeaksThroughAClosedMesh) {
+    using T = TypeParam;
+    Scene s;
+    robust::add_material(s, "m", robust::material(dvec3(200), 0.2, 0.8, 0, 1));
+    s.triangles = icosphere(3);
+    ASSERT_EQ(s.triangles.size(), 1280u);
+    const auto f = FlatScene<T>::build(s, plan_effects(s, Effects{}, 5));
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::uniform_int_distribution<size_t> pick(0, s.triangles.size() - 1);
+    const int packets = (kSanitized ? 1 << 14 : 1 << 17) / kLanes<T>;
+    long leaks = 0;
+    for (int k = 0; k < packets; ++k) {
+        RayPacket<T> p;
+        for (int l = 0; l < kLanes<T>; ++l) {
+            dvec3 o, target;
+            if (k % 2 == 0) {  // from inside, any direction
+                o = 0.5 * dvec3(u(rng), u(rng), u(rng));
+                target = o + dvec3(u(rng), u(rng), u(rng));
+            } else {  // from outside, at a vertex or an edge's midpoint on the near side
+                const Triangle<double>& t = s.triangles[pick(rng)];
+                target = (l % 2) ? t.v0 : 0.5 * (t.v0 + t.v1);
+                // Not from the side: a ray grazing a convex mesh at a vertex
+                // of its outline may rightly miss it.
+                o = 3.0 * glm::normalize(target + 0.5 * glm::normalize(dvec3(u(rng), u(rng), u(rng))));
+            }
+            const Vec3<T> d = glm::normalize(Vec3<T>(target) - Vec3<T>(o));
+            p.origin.x[l] = T(o.x), p.origin.y[l] = T(o.y), p.origin.z[l] = T(o.z);
+            p.direction.x[l] = d.x, p.direction.y[l] = d.y, p.direction.z[l] = d.z;
+        }
+        const HitLanes<T> h = closest_hits(f, p, first_lanes<T>(kLanes<T>));
+        const LaneInts<T> blocked = occluded(f, p, splat(T(10)), first_lanes<T>(kLanes<T>));
+        for (int l = 0; l < kLanes<T>; ++l) leaks += (h.prim[l] == kNoHit) + (blocked[l] == 0);
+    }
+    EXPECT_EQ(leaks, 0);
+}
+
+// Built on the pool or alone, from a million boxes or a few: every box is in
+// exactly one leaf, each leaf's box holds its boxes, and every node's box
+// holds its children's.
+TEST(Bvh, EveryBoxInOneLeafInsideEveryBoxAboveIt) {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-100, 100), size(0, 3);
+    ThreadPool pool(2);
+    for (const int n : {1, 7, 1000, kSanitized ? 40000 : 200000}) {
+        std::vector<Aabb> boxes(static_cast<size_t>(n));
+        for (Aabb& b : boxes) {
+            b.grow(dvec3(u(rng), u(rng), u(rng)));
+            b.grow(b.lo + dvec3(size(rng), size(rng), size(rng)));
+        }
+        for (ThreadPool* p : {static_cast<ThreadPool*>(nullptr), &pool}) {
+            const Bvh bvh = build_bvh(boxes, p);
+            std::vector<int> seen(static_cast<size_t>(n), 0);
+            auto inside = [](const BvhNode& outer, const Aabb& b) {
+                for (int a = 0; a < 3; ++a)
+                    if (!(outer.lo[a] <= b.lo[a] && b.hi[a] <= outer.hi[a])) return false;
+                return true;
+            };
+            long bad = 0;
+            for (const BvhNode& node : bvh.nodes) {
+                if (node.leaf()) {
+                    EXPECT_LE(node.count, kMaxLeafSize);
+                    for (int k = node.first; k < node.first + node.count; ++k) {
+                        const int i = bvh.prims[size_t(k)];
+                        ++seen[size_t(i)];
+                        bad += !inside(node, boxes[size_t(i)]);
+                    }
+                } else {
+                    for (const int c : {node.first, node.second}) {
+                        const BvhNode& child = bvh.nodes[size_t(c)];
+                        Aabb cb{{child.lo[0], child.lo[1], child.lo[2]}, {child.hi[0], child.hi[1], child.hi[2]}};
+                        bad += !inside(node, cb);
+                    }
+                }
+            }
+            EXPECT_EQ(bad, 0) << n;
+            EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), n) << n;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace fh
