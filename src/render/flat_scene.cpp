@@ -40,22 +40,22 @@ std::vector<Aabb> bounds_of(const std::vector<Sphere<double>>& spheres,
     return boxes;
 }
 
-// The leaves of a small BVH as padded bounding spheres of their primitives'
-// boxes; none when it has more than kFewLeaves leaves.
+// The padded bounding sphere of a few triangles.
 template <typename T>
-std::vector<LeafSphere<T>> few_leaves_of(const Bvh& bvh, const std::vector<Aabb>& boxes, int spheres) {
-    std::vector<LeafSphere<T>> out;
-    for (const BvhNode& n : bvh.nodes) {
-        if (!n.leaf()) continue;
-        if (out.size() == kFewLeaves) return {};
-        Aabb b;
-        for (int k = n.first; k < n.first + n.count; ++k) b.grow(boxes[size_t(bvh.prims[size_t(k)])]);
-        const dvec3 center = b.center();
-        double r = 0.5 * glm::length(b.hi - b.lo);
-        r = r * (1 + 1e-4) + 1e-4 * max_abs_component(center) + 1e-30;
-        out.push_back({Vec3<T>(center), T(r * r), n.first, n.count, n.count == 1 && bvh.prims[size_t(n.first)] < spheres});
+BoundingSphere<T> bounding_sphere(const std::vector<const Triangle<double>*>& triangles) {
+    Aabb box;
+    for (const Triangle<double>* t : triangles) {
+        box.grow(t->v0);
+        box.grow(t->v1);
+        box.grow(t->v2);
     }
-    return out;
+    if (box.empty()) return {};
+    const dvec3 center = box.center();
+    double r = 0;
+    for (const Triangle<double>* t : triangles)
+        for (const dvec3& p : {t->v0, t->v1, t->v2}) r = std::max(r, glm::length(p - center));
+    r = r * (1 + 1e-4) + 1e-4 * max_abs_component(center) + 1e-30;
+    return {Vec3<T>(center), T(r * r)};
 }
 
 }  // namespace
@@ -107,7 +107,8 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan, Thr
     const std::vector<Aabb> boxes = bounds_of(scene.spheres, kept);
     f.bvh = build_bvh(boxes, pool);
     f.bvh_boxes = boxes_of<T>(f.bvh);
-    f.few_leaves = few_leaves_of<T>(f.bvh, boxes, int(scene.spheres.size()));
+    f.small = f.bvh.prims.size() <= kMaxSubset;
+    if (f.small) f.few_triangles = bounding_sphere<T>(kept);
 
     if (!fx.diffuse && !fx.specular) return f;
     // One row of colour products per light, by material.

@@ -26,17 +26,14 @@ inline constexpr size_t kMaxSubset = 16;
 // Primitive ids number the spheres, then the planes, then the (kept) triangles.
 inline constexpr int kNoHit = -1;
 
-// A BVH leaf as a padded bounding sphere, for scenes of few leaves
-// (FlatScene::few_leaves): the report's scene has four. Testing each leaf in
-// turn against its sphere needs no division and no walk, which for so few is
-// faster than the BVH's boxes (the same test the tracer used for its
-// triangles before it had a BVH).
+// A padded sphere around all of a small scene's triangles (FlatScene::
+// few_triangles). A ray that misses it skips them all, with no division and
+// no walk: for a scene of a few primitives -- the report's has seven --
+// that is faster than any BVH.
 template <typename T>
-struct LeafSphere {
-    Vec3<T> center;
-    T radius2;  // padded so rounding never culls a real hit
-    int first, count;  // into bvh.prims
-    bool lone_sphere;  // the leaf is one sphere: test it, not its bound
+struct BoundingSphere {
+    Vec3<T> center{0};
+    T radius2 = 0;  // padded so rounding never culls a real hit
 
     // Per lane: the ray meets the sphere ahead of its origin (or starts
     // inside it). A plain test is enough for a padded bound; the robust one
@@ -50,7 +47,6 @@ struct LeafSphere {
         return (disc >= T(0)) & ((b > T(0)) | (disc > b * b));
     }
 };
-inline constexpr size_t kFewLeaves = 8;
 
 // Where a primitive's surface is: what shading needs to turn a hit into a
 // point and a normal.
@@ -126,7 +122,10 @@ struct FlatScene {
     // any other is triangle i - spheres.size().
     Bvh bvh;
     std::vector<NodeBox<T>> bvh_boxes;  // bvh.nodes' boxes in T
-    std::vector<LeafSphere<T>> few_leaves;  // when the BVH has at most kFewLeaves leaves
+    // At most kMaxSubset spheres and triangles: no BVH walk, every sphere
+    // tested, the triangles behind one bounding sphere, all in id order.
+    bool small = false;
+    BoundingSphere<T> few_triangles;
     std::vector<PrimitiveSurface<T>> surfaces;  // by primitive id
     std::vector<MaterialShading<T>> shading;    // by material
     std::vector<DirectionalLight<T>> directional_lights;

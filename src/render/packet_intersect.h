@@ -40,6 +40,17 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatScene<T>& scene, const RayPacke
     auto reach = [&h]() FH_HOT_LAMBDA { return h.t * (T(1) + std::numeric_limits<T>::epsilon()); };
     const int spheres = int(scene.spheres.size()), planes = int(scene.planes.size());
     std::optional<RayBasis<T>> basis;  // built once a triangle is reached
+    if (scene.small && !(subset && !subset->walk_bvh)) {
+        // Every sphere, the planes, the triangles if their bound is reached:
+        // in increasing id order, so the first of equal hits is kept.
+        for (int i = 0; i < spheres; ++i) keep(scene.spheres[size_t(i)].intersect(ray, T(0), h.t), i);
+        for (int p = 0; p < planes; ++p) keep(scene.planes[size_t(p)].intersect(ray, T(0), h.t), spheres + p);
+        if (scene.triangles.empty() || none(scene.few_triangles.reaches(ray) & (h.t > T(0)))) return h;
+        const RayBasis<T> triangle_basis(ray);
+        for (int k = 0; k < int(scene.triangles.size()); ++k)
+            keep(scene.triangles[size_t(k)].intersect(triangle_basis, T(0), h.t), spheres + planes + k);
+        return h;
+    }
     if (subset && !subset->walk_bvh) {
         // In increasing id order, so the first of equal hits is kept.
         const std::vector<int>& list = subset->prims;
@@ -66,11 +77,7 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatScene<T>& scene, const RayPacke
         }
         return false;
     };
-    if (!scene.few_leaves.empty()) {
-        for (const LeafSphere<T>& leaf : scene.few_leaves)
-            if (leaf.lone_sphere || any(leaf.reaches(ray) & (h.t > T(0)))) test_leaf(leaf.first, leaf.count);
-        return h;
-    }
+
     for_each_leaf(scene.bvh, scene.bvh_boxes.data(), ray, active, h.t, test_leaf);
     return h;
 }
@@ -103,10 +110,14 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatScene<T>& scene, const RayPacket<T>
         }
         return false;
     };
-    if (!scene.few_leaves.empty()) {
-        for (const LeafSphere<T>& leaf : scene.few_leaves)
-            if ((leaf.lone_sphere || any(leaf.reaches(ray) & (limit > T(0)))) && test_leaf(leaf.first, leaf.count))
-                return blocked;
+    if (scene.small) {
+        for (const Sphere<T>& s : scene.spheres)
+            if (block(s.intersect(ray, T(0), limit))) return blocked;
+        if (none(scene.few_triangles.reaches(ray) & (limit > T(0)))) return blocked;
+        for (const Triangle<T>& t : scene.triangles) {
+            if (!basis) basis.emplace(ray);
+            if (block(t.intersect(*basis, T(0), limit))) return blocked;
+        }
         return blocked;
     }
     for_each_leaf(scene.bvh, scene.bvh_boxes.data(), ray, active, limit, test_leaf);
