@@ -5,10 +5,14 @@
 # light -- on 2 threads, and writes OUT_DIR/scaling.csv and a log-log plot
 # OUT_DIR/scaling.png (gnuplot).
 #   scripts/bench_scaling.sh [OUT_DIR] [--threads N] [--runs K] [--max-level K]
-# BENCH names the benchmark binary (default: build/bench/firsthit_bench_scaling).
+# Then the same for real meshes from Debian's package data (scripts/
+# fetch_meshes.sh), through `firsthit bench`: OUT_DIR/scaling_real.csv.
+# BENCH names the benchmark binary (default: build/bench/firsthit_bench_scaling),
+# FIRSTHIT the renderer (default: build/firsthit).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 bench=${BENCH:-$here/../build/bench/firsthit_bench_scaling}
+firsthit=${FIRSTHIT:-$here/../build/firsthit}
 out=$here/../output
 args=(--threads 2 --runs 5)
 while [[ $# -gt 0 ]]; do
@@ -21,6 +25,22 @@ done
 mkdir -p "$out"
 "$bench" "${args[@]}" | tee "$out/scaling.csv.tmp"
 mv "$out/scaling.csv.tmp" "$out/scaling.csv"
+
+# Real meshes: the bunny (and whatever scene files name fetched meshes).
+bash "$here/fetch_meshes.sh"
+threads=2
+for ((i = 0; i < ${#args[@]}; i += 2)); do [[ ${args[i]} == --threads ]] && threads=${args[i+1]}; done
+{
+  echo "scene,triangles,load_ms,prepare_ms,build_ms,bvh_nodes,render_ms,rays_per_second"
+  for scene in "$here/../animations/bunny.yaml"; do
+    tris=$("$firsthit" info "$scene" | sed -n 's/^triangles: //p')
+    "$firsthit" bench "$scene" --runs 9 --threads "$threads" |
+      awk -F': ' -v s="$(basename "$scene" .yaml)" -v t="$tris" '
+        {v[$1] = $2}
+        END {print s "," t "," v["load_ms"] "," v["prepare_ms"] "," v["build_ms"] "," v["bvh_nodes"] "," v["ms_per_frame"] "," v["rays_per_second"]}'
+  done
+} | tee "$out/scaling_real.csv.tmp"
+mv "$out/scaling_real.csv.tmp" "$out/scaling_real.csv"
 if command -v gnuplot >/dev/null; then
   gnuplot <<PLOT
 set terminal pngcairo size 900,560 font ",11"
@@ -32,10 +52,12 @@ set ylabel 'ms (log scale)'
 set logscale xy
 set grid
 set key top left
-plot '$out/scaling.csv' skip 1 using 1:5 with linespoints lw 2 pt 7 title 'render (per frame)', \
-     '' skip 1 using 1:2 with linespoints lw 2 pt 5 title 'prepare (flatten + BVH, once)'
+plot '$out/scaling.csv' skip 1 using 1:5 with linespoints lw 2 pt 7 title 'icospheres: render (per frame)', \
+     '' skip 1 using 1:2 with linespoints lw 2 pt 5 title 'icospheres: prepare (flatten + BVH, once)', \
+     '$out/scaling_real.csv' skip 1 using 2:7 with points pt 9 ps 2 title 'Stanford bunny: render', \
+     '' skip 1 using 2:4 with points pt 11 ps 2 title 'Stanford bunny: prepare'
 PLOT
-  echo "bench_scaling.sh: $out/scaling.csv, $out/scaling.png"
+  echo "bench_scaling.sh: $out/scaling.csv, $out/scaling_real.csv, $out/scaling.png"
 else
   echo "bench_scaling.sh: $out/scaling.csv (no gnuplot: no plot)"
 fi

@@ -9,6 +9,7 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libyaml-cpp-dev zlib1g-dev
           googletest libgtest-dev libbenchmark-dev ffmpeg gnuplot-nox
+          libassimp-dev  # mesh files: OBJ, PLY, STL, OFF
           clang libclang-rt-14-dev  # clang, libclang-rt: the fuzzers (scripts/fuzz.sh)
           slurm-wlm munge  # a one-node Slurm cluster for tests/slurm/test_slurm.sh
           libglfw3-dev libgl-dev  # firsthit view's window (optional at build time)

@@ -64,6 +64,8 @@ int run_render(const Words& words) {
                   << "samples_per_pixel: " << job.settings().samples_per_pixel << "\n"
                   << "precision: " << precision_name(job.settings().precision) << "\n"
                   << "threads: " << still.threads << "\n";
+        std::cout << "triangles: " << job.scene().triangles.size() << "\n"
+                  << "degenerate_triangles_dropped: " << job.scene().degenerate_mesh_triangles << "\n";
         print_plan(std::cout, r.plan);
         print_counts(std::cout, r.counts);
         std::cout << "render_ms: " << r.render_ms << "\n"

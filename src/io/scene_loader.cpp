@@ -1,8 +1,12 @@
 #include "io/scene_loader.h"
 
 #include <algorithm>
+#include <filesystem>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "io/map_reader.h"
+#include "io/mesh_loader.h"
 
 namespace fh {
 
@@ -76,10 +80,61 @@ void read_triangle(const MapReader& m, int material, Scene& scene) {
                                                      r.vec3(v[2], "vertices"), material));
 }
 
+// A mesh's `transform`: p -> translate + rotate(scale * p), in that order
+// (scale first, about the origin; then the rotation about `axis` through
+// the origin, right-handed, by `degrees` or `radians`; then the move).
+glm::dmat4 read_transform(const YamlReader& r, const YAML::Node& node) {
+    const MapReader m(r, node, "'transform'", {"scale", "rotate", "translate"});
+    glm::dmat4 t(1.0);
+    if (m.has("translate")) t = glm::translate(t, m.vec3("translate"));
+    if (const MapReader::Entry* rot = m.find("rotate")) {
+        const MapReader q(r, rot->value, "'rotate'", {"axis", "degrees", "radians"});
+        if (q.has("degrees") == q.has("radians"))
+            r.fail(rot->value, "'rotate' needs an angle: 'degrees' or 'radians' (one of them)");
+        const double angle = q.has("degrees") ? glm::radians(q.number("degrees")) : q.number("radians");
+        t = glm::rotate(t, angle, glm::normalize(q.direction("axis")));
+    }
+    if (const MapReader::Entry* sc = m.find("scale")) {
+        const dvec3 factor = sc->value.IsSequence() ? m.vec3("scale") : dvec3(m.positive("scale"));
+        if (!(factor.x > 0 && factor.y > 0 && factor.z > 0))
+            r.fail(sc->value, "'scale' must be greater than 0 (a number, or one per axis)");
+        t = glm::scale(t, factor);
+    }
+    return t;
+}
+
+// A mesh file (io/mesh_loader.h), its path relative to the scene file's
+// folder, transformed, as triangles of the scene. The file's own errors name
+// the mesh file.
+void read_mesh(const MapReader& m, int material, Scene& scene) {
+    const YamlReader& r = m.reader();
+    const YAML::Node file = m.value("file");
+    const std::filesystem::path path = std::filesystem::path(r.file()).parent_path() / r.string(file, "file");
+    const glm::dmat4 transform = m.has("transform") ? read_transform(r, m.value("transform")) : glm::dmat4(1.0);
+    if (m.boolean_or("smooth", false))
+        r.fail(m.value("smooth"), "smooth shading of meshes is not supported yet; use smooth: false");
+    const MeshData mesh = load_mesh(path.string());
+    std::vector<dvec3> p(mesh.positions.size());
+    for (size_t i = 0; i < p.size(); ++i) p[i] = dvec3(transform * glm::dvec4(mesh.positions[i], 1.0));
+    scene.triangles.reserve(scene.triangles.size() + mesh.triangles.size());
+    size_t flat = 0;
+    for (const auto& t : mesh.triangles) {
+        scene.triangles.push_back(Triangle<double>::make(p[t[0]], p[t[1]], p[t[2]], material));
+        flat += scene.triangles.back().degenerate();  // collapsed by the transform's rounding
+    }
+    scene.degenerate_mesh_triangles += mesh.degenerate_dropped + flat;
+    ++scene.meshes;
+}
+
 void read_surface(const YamlReader& r, const YAML::Node& node, Scene& scene) {
     // The type decides which keys are allowed, so it is read first.
     const MapReader any(r, node, "surface", {});
-    const int type = r.choice(any.value("type"), "surface type", {"sphere", "plane", "triangle"});
+    const int type = r.choice(any.value("type"), "surface type", {"sphere", "plane", "triangle", "mesh"});
+    if (type == 3) {
+        const MapReader m(r, node, "mesh", {"type", "file", "material", "transform", "smooth"});
+        read_mesh(m, material_index(m, scene), scene);
+        return;
+    }
     if (type == 0) {
         const MapReader m(r, node, "sphere", {"type", "center", "radius", "material"});
         const dvec3 center = m.vec3("center");

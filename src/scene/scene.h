@@ -27,6 +27,8 @@ struct Scene {
     std::vector<DirectionalLight<double>> directional_lights;
     std::vector<SpotLight<double>> spot_lights;
     std::vector<Camera> cameras;
+    int meshes = 0;                        // mesh files read into `triangles`
+    size_t degenerate_mesh_triangles = 0;  // their zero-area triangles, left out
 
     const Camera* find_camera(const std::string& name) const {
         for (const Camera& c : cameras)
