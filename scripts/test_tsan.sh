@@ -34,6 +34,6 @@ if setarch "$(uname -m)" -R true 2>/dev/null; then run=(setarch "$(uname -m)" -R
 # the report's images) at this build's width.
 tracer='Packets.*:Shading.*:FlatScene.*:FastMath*:Intersections*:Accuracy.*:EffectPlan.*:ReportImages.*:Sampler.*'
 tracer+=':TileCulling.*:Camera*:Mirrors*:PlaneRobust*:ScaleInvariance*:SelfIntersection*:SphereRobust*'
-tracer+=':SpotRobust*:TriangleRobust*:SpotLight.*:RenderCli.*'
+tracer+=':SpotRobust*:TriangleRobust*:SpotLight.*:RenderCli.*:Bvh*'
 "${run[@]}" "$build/tests/firsthit_tests" --gtest_filter="$tracer" --gtest_brief=1
 echo "test_tsan: no data race found"
