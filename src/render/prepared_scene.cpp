@@ -21,9 +21,9 @@ PreparedScene::~PreparedScene() = default;
 PreparedScene::PreparedScene(PreparedScene&&) noexcept = default;
 PreparedScene& PreparedScene::operator=(PreparedScene&&) noexcept = default;
 
-FrameResult PreparedScene::render(const Camera& camera, ThreadPool* pool) const {
-    if (float_) return render_frame_as<float>(*float_, camera, settings_, pool);
-    return render_frame_as<double>(*double_, camera, settings_, pool);
+FrameResult PreparedScene::render(const Camera& camera, ThreadPool* pool, const RenderSettings& sampling) const {
+    if (float_) return render_frame_as<float>(*float_, camera, sampling, pool);
+    return render_frame_as<double>(*double_, camera, sampling, pool);
 }
 
 const EffectPlan& PreparedScene::plan() const { return float_ ? float_->plan : double_->plan; }

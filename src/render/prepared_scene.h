@@ -25,7 +25,11 @@ public:
     // One frame through `camera`; pool == nullptr renders on the calling
     // thread (the frame pipeline runs one frame per worker that way). Safe
     // to call from several threads at once.
-    FrameResult render(const Camera& camera, ThreadPool* pool) const;
+    FrameResult render(const Camera& camera, ThreadPool* pool) const { return render(camera, pool, settings_); }
+    // The same with other sampling (samples per pixel, adaptive
+    // anti-aliasing): a preview. What the plan fixed -- effects, depth,
+    // precision -- stays as prepared.
+    FrameResult render(const Camera& camera, ThreadPool* pool, const RenderSettings& sampling) const;
 
     const RenderSettings& settings() const { return settings_; }
     const EffectPlan& plan() const;

@@ -11,7 +11,7 @@
 #include <optional>
 #include <thread>
 
-#include "render/render.h"
+#include "render/prepared_scene.h"
 #include "view/view_state.h"
 
 namespace fh::view {
@@ -38,7 +38,7 @@ struct Result {
 class Renderer {
 public:
     Renderer(const Scene& scene, const RenderSettings& settings, int threads)
-        : scene_(scene), settings_(settings), pool_(threads),
+        : settings_(settings), pool_(threads), prepared_(scene, settings, &pool_),
           thread_([this] { loop(); }) {}
 
     ~Renderer() {
@@ -107,7 +107,7 @@ private:
                 s.samples_per_pixel = 1;
                 s.adaptive = false;
             }
-            FrameResult fr = render_frame(scene_, view::reduced(full, divisor), s, &pool_);
+            FrameResult fr = prepared_.render(view::reduced(full, divisor), &pool_, s);
             {
                 const std::lock_guard lock(mutex_);
                 result_ = Result{req.generation, req.state, divisor, std::move(fr.image), fr.render_ms};
@@ -122,9 +122,9 @@ private:
         }
     }
 
-    const Scene& scene_;
     RenderSettings settings_;
     ThreadPool pool_;
+    const PreparedScene prepared_;  // the geometry and its BVH, once for every frame shown
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<Request> pending_;
