@@ -17,7 +17,9 @@ constexpr int kSubtreeSize = 32768;
 // Past this depth splits are by count: the traversal's stack stays bounded
 // whatever the input (coincident boxes give the heuristic nothing to split).
 constexpr int kMaxSahDepth = 96;
-// The cost of visiting a node against that of testing one primitive.
+// The cost of visiting a node against that of testing one primitive: a
+// packet's watertight triangle test costs several box tests. Measured on
+// the scaling family (20k to 1.3M triangles): 4 beats 1, 2 and 8.
 constexpr double kTraversalCost = 4.0;
 
 float round_down(double v) {

@@ -37,25 +37,34 @@ FH_HOT_INLINE ColorLanes<T> clamp_samples(const ColorLanes<T>& c, const LaneInts
 }
 
 // One sample through each pixel's centre, for the pixels [x0, x1) x [y0, y1):
-// a packet is up to W neighbouring pixels of a row, and their colours go
-// straight into the image.
+// a packet is a block of neighbouring pixels -- 4 wide and W / 4 high (4 x 2
+// for 8 doubles) rather than a row of W, so its rays stay close together and
+// part ways later in a BVH walk over small triangles -- and their colours go
+// straight into the image. (A pixel's colour does not depend on its packet.)
 template <typename T, typename S>
 void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1, int y0, int y1,
                     const PrimitiveSubset* visible, Image& image, RayCounts& counts) {
     constexpr int W = kLanes<T>;
-    Lanes<T> lane;
-    for (int i = 0; i < W; ++i) lane[i] = T(i);
-    for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; x += W) {
-            const int n = std::min(W, x1 - x);
-            // Lanes past the row's end repeat its last pixel, inactive.
-            const Lanes<T> px = min(T(x) + lane, splat(T(x + n - 1))) + T(0.5);
-            const LaneInts<T> active = first_lanes<T>(n);
-            counts.primary += std::uint64_t(n);
-            const ColorLanes<T> c = clamp_samples(
-                shader.trace(camera.generate(px, splat(T(y) + T(0.5))), active, counts, visible), active,
-                counts);
-            std::uint8_t* out = image.pixel(x, y);
+    constexpr int BW = W < 4 ? W : 4, BH = W / BW;
+    Lanes<T> dx, dy;
+    for (int i = 0; i < W; ++i) dx[i] = T(i % BW), dy[i] = T(i / BW);
+    for (int y = y0; y < y1; y += BH) {
+        for (int x = x0; x < x1; x += BW) {
+            const int nx = std::min(BW, x1 - x), ny = std::min(BH, y1 - y);
+            // Lanes past the block's edge repeat a pixel of it, inactive.
+            const Lanes<T> px = min(T(x) + dx, splat(T(x + nx - 1))) + T(0.5);
+            const Lanes<T> py = min(T(y) + dy, splat(T(y + ny - 1))) + T(0.5);
+            const LaneInts<T> active = (dx < T(nx)) & (dy < T(ny));
+            counts.primary += std::uint64_t(nx * ny);
+            const ColorLanes<T> c =
+                clamp_samples(shader.trace(camera.generate(px, py), active, counts, visible), active, counts);
+            auto put = [&](auto&& byte_of) {
+                for (int j = 0; j < ny; ++j) {
+                    std::uint8_t* out = image.pixel(x, y + j);
+                    for (int i = 0; i < nx; ++i)
+                        for (int k = 0; k < 3; ++k) out[3 * i + k] = byte_of(k, j * BW + i);
+                }
+            };
             if constexpr (std::is_same_v<T, double>) {
                 // In [0, 255]: floor(v + 0.5) is the truncation, one vector
                 // conversion per channel. (In float, v + 0.5 would round
@@ -63,15 +72,13 @@ void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1
                 const LaneInts<T> bytes[3] = {__builtin_convertvector(c.x + T(0.5), LaneInts<T>),
                                               __builtin_convertvector(c.y + T(0.5), LaneInts<T>),
                                               __builtin_convertvector(c.z + T(0.5), LaneInts<T>)};
-                for (int i = 0; i < n; ++i)
-                    for (int k = 0; k < 3; ++k) out[3 * i + k] = std::uint8_t(bytes[k][i]);
+                put([&](int k, int lane) { return std::uint8_t(bytes[k][lane]); });
             } else {
                 alignas(64) T rgb[3][W];
                 store(rgb[0], c.x);
                 store(rgb[1], c.y);
                 store(rgb[2], c.z);
-                for (int i = 0; i < n; ++i)
-                    for (int k = 0; k < 3; ++k) out[3 * i + k] = to_byte(double(rgb[k][i]));
+                put([&](int k, int lane) { return to_byte(double(rgb[k][lane])); });
             }
         }
     }
