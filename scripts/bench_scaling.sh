@@ -7,12 +7,18 @@
 #   scripts/bench_scaling.sh [OUT_DIR] [--threads N] [--runs K] [--max-level K]
 # Then the same for real meshes from Debian's package data (scripts/
 # fetch_meshes.sh), through `firsthit bench`: OUT_DIR/scaling_real.csv.
+# Then, when it is built, the Embree 3 peer (bench/embree_reference.cpp: the
+# same scenes, rays and shading, 16-wide packets) with the same --threads,
+# --runs and --max-level: OUT_DIR/scaling_embree.csv, a third curve and the
+# bunny's point on the plot. Without it, the rest runs as before.
 # BENCH names the benchmark binary (default: build/bench/firsthit_bench_scaling),
-# FIRSTHIT the renderer (default: build/firsthit).
+# FIRSTHIT the renderer (default: build/firsthit), EMBREE_REFERENCE the
+# Embree peer (default: build/bench/firsthit_embree_reference).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 bench=${BENCH:-$here/../build/bench/firsthit_bench_scaling}
 firsthit=${FIRSTHIT:-$here/../build/firsthit}
+embree=${EMBREE_REFERENCE:-$here/../build/bench/firsthit_embree_reference}
 out=$here/../output
 args=(--threads 2 --runs 5)
 while [[ $# -gt 0 ]]; do
@@ -41,6 +47,23 @@ for ((i = 0; i < ${#args[@]}; i += 2)); do [[ ${args[i]} == --threads ]] && thre
   done
 } | tee "$out/scaling_real.csv.tmp"
 mv "$out/scaling_real.csv.tmp" "$out/scaling_real.csv"
+
+# The Embree 3 peer, if built: icosphere rows, then the bunny's.
+have_embree=0
+if [[ -x $embree ]]; then
+  "$embree" "${args[@]}" --bunny "$here/../animations/meshes/bunny00.off" | tee "$out/scaling_embree.csv.tmp"
+  mv "$out/scaling_embree.csv.tmp" "$out/scaling_embree.csv"
+  have_embree=1
+else
+  echo "bench_scaling.sh: no Embree reference ($embree is not built: apt-get install libembree-dev, reconfigure," \
+       "cmake --build build --target firsthit_embree_reference); plotting firsthit alone" >&2
+fi
+embree_plot=""
+if [[ $have_embree == 1 ]]; then
+  embree_plot=", \\
+     '$out/scaling_embree.csv' skip 1 using 2:(strcol(1) eq 'bunny' ? 1/0 : \$4) with linespoints lw 2 pt 13 title 'Embree 3, 16-wide packets: render (per frame)', \\
+     '' skip 1 using 2:(strcol(1) eq 'bunny' ? \$4 : 1/0) with points pt 13 ps 2 title 'Stanford bunny: Embree 3 render'"
+fi
 if command -v gnuplot >/dev/null; then
   gnuplot <<PLOT
 set terminal pngcairo size 900,560 font ",11"
@@ -55,9 +78,9 @@ set key top left
 plot '$out/scaling.csv' skip 1 using 1:5 with linespoints lw 2 pt 7 title 'icospheres: render (per frame)', \
      '' skip 1 using 1:2 with linespoints lw 2 pt 5 title 'icospheres: prepare (flatten + BVH, once)', \
      '$out/scaling_real.csv' skip 1 using 2:7 with points pt 9 ps 2 title 'Stanford bunny: render', \
-     '' skip 1 using 2:4 with points pt 11 ps 2 title 'Stanford bunny: prepare'
+     '' skip 1 using 2:4 with points pt 11 ps 2 title 'Stanford bunny: prepare'$embree_plot
 PLOT
-  echo "bench_scaling.sh: $out/scaling.csv, $out/scaling_real.csv, $out/scaling.png"
+  echo "bench_scaling.sh: $out/scaling.csv, $out/scaling_real.csv$([[ $have_embree == 1 ]] && echo ", $out/scaling_embree.csv"), $out/scaling.png"
 else
-  echo "bench_scaling.sh: $out/scaling.csv (no gnuplot: no plot)"
+  echo "bench_scaling.sh: $out/scaling.csv$([[ $have_embree == 1 ]] && echo ", $out/scaling_embree.csv") (no gnuplot: no plot)"
 fi

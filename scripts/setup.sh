@@ -12,6 +12,7 @@ packages=(build-essential cmake pkg-config libglm-dev libstb-dev libyaml-cpp-dev
           libassimp-dev  # mesh files: OBJ, PLY, STL, OFF
           clang libclang-rt-14-dev  # clang, libclang-rt: the fuzzers (scripts/fuzz.sh)
           slurm-wlm munge  # a one-node Slurm cluster for tests/slurm/test_slurm.sh
+          libembree-dev  # bench/embree_reference: the Embree 3 peer of the mesh benchmarks (optional at build time)
           libglfw3-dev libgl-dev  # firsthit view's window (optional at build time)
           xvfb xdotool libgl1-mesa-dri)  # its test: a virtual X server, keys, Mesa's software GL
 missing=()
