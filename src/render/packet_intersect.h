@@ -29,9 +29,10 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatScene<T>& scene, const RayPacke
                                          const LaneInts<T>& active, const PrimitiveSubset* subset = nullptr) {
     HitLanes<T> h{select(active, splat(kInfinity<T>), splat(T(0))), LaneInts<T>{} + kNoHit};
     // On a tie the lower primitive id wins, whatever order the BVH visits
-    // them in: spheres before planes before triangles, triangles in file
-    // order. So each test looks a little past the nearest hit so far
-    // (`reach`), and keep decides.
+    // them in: spheres before planes before triangles, triangles in the flat
+    // scene's order (the file's for small scenes, the leaves' for others).
+    // So each BVH test looks a little past the nearest hit so far (`reach`),
+    // and keep decides.
     auto keep = [&h](const Lanes<T>& t, int id) FH_HOT_LAMBDA {
         const LaneInts<T> nearer = (t < h.t) | ((t == h.t) & (h.prim > id));
         h.t = select(nearer, t, h.t);
