@@ -128,8 +128,14 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan, Thr
     f.bvh = build_bvh(boxes, pool);
     f.bvh_boxes = boxes_of<T>(f.bvh);
     f.small = f.bvh.prims.size() <= kMaxSubset;
-    if (f.small) f.few_triangles = bounding_sphere<T>(kept);
-    else in_leaf_order(f);
+    if (f.small) {
+        f.few_triangles = bounding_sphere<T>(kept);
+        f.everything.walk_bvh = false;
+        f.everything.prims.assign(f.bvh.prims.begin(), f.bvh.prims.end());
+        std::sort(f.everything.prims.begin(), f.everything.prims.end());
+    } else {
+        in_leaf_order(f);
+    }
 
     if (!fx.diffuse && !fx.specular) return f;
     // One row of colour products per light, by material.

@@ -126,6 +126,9 @@ struct FlatScene {
     // tested, the triangles behind one bounding sphere, all in id order.
     bool small = false;
     BoundingSphere<T> few_triangles;
+    // A small scene's every sphere and triangle, as a list in id order
+    // (render/packet_intersect.h tests it one by one); larger: walk_bvh.
+    PrimitiveSubset everything;
     std::vector<PrimitiveSurface<T>> surfaces;  // by primitive id
     std::vector<MaterialShading<T>> shading;    // by material
     std::vector<DirectionalLight<T>> directional_lights;

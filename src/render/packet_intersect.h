@@ -41,28 +41,19 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatScene<T>& scene, const RayPacke
     auto reach = [&h]() FH_HOT_LAMBDA { return h.t * (T(1) + std::numeric_limits<T>::epsilon()); };
     const int spheres = int(scene.spheres.size()), planes = int(scene.planes.size());
     std::optional<RayBasis<T>> basis;  // built once a triangle is reached
-    if (scene.small && !(subset && !subset->walk_bvh)) {
-        // Every sphere, the planes, the triangles if their bound is reached:
-        // in increasing id order, so the first of equal hits is kept.
-        for (int i = 0; i < spheres; ++i) keep(scene.spheres[size_t(i)].intersect(ray, T(0), h.t), i);
-        for (int p = 0; p < planes; ++p) keep(scene.planes[size_t(p)].intersect(ray, T(0), h.t), spheres + p);
-        if (scene.triangles.empty() || none(scene.few_triangles.reaches(ray) & (h.t > T(0)))) return h;
-        const RayBasis<T> triangle_basis(ray);
-        for (int k = 0; k < int(scene.triangles.size()); ++k)
-            keep(scene.triangles[size_t(k)].intersect(triangle_basis, T(0), h.t), spheres + planes + k);
-        return h;
-    }
-    if (subset && !subset->walk_bvh) {
-        // In increasing id order, so the first of equal hits is kept.
-        const std::vector<int>& list = subset->prims;
+    // A short list (a tile's, or a small scene's every primitive) is tested
+    // one by one in increasing id order, so the first of equal hits is kept.
+    const PrimitiveSubset& listed = subset && !subset->walk_bvh ? *subset : scene.everything;
+    if (!listed.walk_bvh) {
+        const std::vector<int>& list = listed.prims;
         size_t k = 0;
         for (; k < list.size() && list[k] < spheres; ++k)
             keep(scene.spheres[size_t(list[k])].intersect(ray, T(0), h.t), list[k]);
         for (int p = 0; p < planes; ++p) keep(scene.planes[size_t(p)].intersect(ray, T(0), h.t), spheres + p);
-        for (; k < list.size(); ++k) {
-            if (!basis) basis.emplace(ray);
-            keep(scene.triangles[size_t(list[k] - spheres)].intersect(*basis, T(0), h.t), planes + list[k]);
-        }
+        if (k == list.size() || (scene.small && none(scene.few_triangles.reaches(ray) & (h.t > T(0))))) return h;
+        const RayBasis<T> triangle_basis(ray);
+        for (; k < list.size(); ++k)
+            keep(scene.triangles[size_t(list[k] - spheres)].intersect(triangle_basis, T(0), h.t), planes + list[k]);
         return h;
     }
     for (int p = 0; p < planes; ++p) keep(scene.planes[size_t(p)].intersect(ray, T(0), reach()), spheres + p);
@@ -111,14 +102,16 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatScene<T>& scene, const RayPacket<T>
         }
         return false;
     };
-    if (scene.small) {
-        for (const Sphere<T>& s : scene.spheres)
-            if (block(s.intersect(ray, T(0), limit))) return blocked;
-        if (none(scene.few_triangles.reaches(ray) & (limit > T(0)))) return blocked;
-        for (const Triangle<T>& t : scene.triangles) {
-            if (!basis) basis.emplace(ray);
-            if (block(t.intersect(*basis, T(0), limit))) return blocked;
-        }
+    if (!scene.everything.walk_bvh) {  // a small scene: every sphere, the triangles behind their bound
+        const std::vector<int>& list = scene.everything.prims;
+        size_t k = 0;
+        for (; k < list.size() && list[k] < spheres; ++k)
+            if (block(scene.spheres[size_t(list[k])].intersect(ray, T(0), limit))) return blocked;
+        if (k == list.size() || none(scene.few_triangles.reaches(ray) & (limit > T(0)))) return blocked;
+        const RayBasis<T> triangle_basis(ray);
+        for (; k < list.size(); ++k)
+            if (block(scene.triangles[size_t(list[k] - spheres)].intersect(triangle_basis, T(0), limit)))
+                return blocked;
         return blocked;
     }
     for_each_leaf(scene.bvh, scene.bvh_boxes.data(), ray, active, limit, test_leaf);
