@@ -117,12 +117,13 @@ void read_mesh(const MapReader& m, int material, Scene& scene) {
     std::vector<dvec3> p(mesh.positions.size());
     for (size_t i = 0; i < p.size(); ++i) p[i] = dvec3(transform * glm::dvec4(mesh.positions[i], 1.0));
     scene.triangles.reserve(scene.triangles.size() + mesh.triangles.size());
-    size_t flat = 0;
+    size_t collapsed = 0;  // zero area after the transform's rounding: dropped too
     for (const auto& t : mesh.triangles) {
-        scene.triangles.push_back(Triangle<double>::make(p[t[0]], p[t[1]], p[t[2]], material));
-        flat += scene.triangles.back().degenerate();  // collapsed by the transform's rounding
+        const Triangle<double> triangle = Triangle<double>::make(p[t[0]], p[t[1]], p[t[2]], material);
+        if (triangle.degenerate()) ++collapsed;
+        else scene.triangles.push_back(triangle);
     }
-    scene.degenerate_mesh_triangles += mesh.degenerate_dropped + flat;
+    scene.degenerate_mesh_triangles += mesh.degenerate_dropped + collapsed;
     ++scene.meshes;
 }
 
