@@ -38,10 +38,15 @@ void print_warnings(const Job& job) {
     for (const std::string& w : job.warnings) std::cerr << w << "\n";
 }
 
-Job job_from_args(const Args& args, const char* movie_camera_note) {
+const std::string& one_file(const Args& args) {
     if (args.positional().size() != 1)
         throw UsageError("expected one FILE (a scene or movie file), got " +
                          std::to_string(args.positional().size()));
+    return args.positional()[0];
+}
+
+Job job_from_args(const Args& args, const char* movie_camera_note) {
+    one_file(args);
     JobRequest request{args.positional()[0], args.value("--camera"), args.value("--frame")};
     if (movie_camera_note) request.movie_camera_note = movie_camera_note;
     Job job = load_job(request);

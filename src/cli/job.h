@@ -3,6 +3,7 @@
 // Job (pipeline/job.h) and its settings.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "cli/args.h"
@@ -22,6 +23,9 @@ Job job_from_args(const Args& args, const char* movie_camera_note = nullptr);
 // --spp, --depth, --precision, --adaptive, --aa-* and --no-prune on top of
 // the file's settings.
 void apply_quality_flags(const Args& args, RenderSettings& settings);
+
+// The one positional FILE; UsageError when there is none or more.
+const std::string& one_file(const Args& args);
 
 // The job's warnings, one line each on stderr.
 void print_warnings(const Job& job);

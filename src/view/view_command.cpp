@@ -65,7 +65,6 @@ int run_view(const Words& words) {
 #else  // FIRSTHIT_HAVE_VIEW
 
 #include "cli/job.h"
-#include "io/input_error.h"
 #include "view/viewer.h"
 
 namespace fh {
@@ -75,9 +74,7 @@ int run_view(const Words& words) {
     auto spec = job_flags();
     spec.push_back({"--threads"});
     const Args args = Args::parse("view", words, spec);
-    if (args.positional().size() != 1)
-        throw UsageError("expected one FILE (a scene or movie file), got " +
-                         std::to_string(args.positional().size()));
+    one_file(args);  // before --threads, as the other commands check it first
     const int threads = args.integer("--threads", 0, 0, 1024);
     // Bad input is found (status 2) before a window is asked for.
     const Job job = job_from_args(args, "its camera is set in the file; P flips its projection");
