@@ -112,7 +112,7 @@ void BM_ClosestHits(benchmark::State& state) {
     const auto rays = camera_tile<T>(int(state.range(0)), int(state.range(1)));
     for (auto _ : state)
         for (const RayPacket<T>& p : rays)
-            benchmark::DoNotOptimize(closest_hits(flat, p, first_lanes<T>(kLanes<T>)));
+            benchmark::DoNotOptimize(closest_hits(*flat.geometry, p, first_lanes<T>(kLanes<T>)));
     state.SetItemsProcessed(state.iterations() * kTile * kTile);
 }
 

@@ -19,12 +19,4 @@ struct Hit {
     bool found() const { return kind != ShapeKind::none; }
 };
 
-// What shading needs, computed once for the nearest hit only.
-template <typename T>
-struct SurfacePoint {
-    Vec3<T> point;   // projected back onto the surface (PrimitiveSurface::project)
-    Vec3<T> normal;  // unit, facing the incoming ray (report 8.4)
-    int material = -1;
-};
-
 }  // namespace fh

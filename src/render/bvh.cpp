@@ -249,4 +249,25 @@ Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool) {
     return bvh;
 }
 
+void refit_bvh(Bvh& bvh, const std::vector<Aabb>& boxes) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<Aabb> node_box(bvh.nodes.size());
+    // Children follow their parent: from the back, both are done first.
+    for (size_t k = bvh.nodes.size(); k-- > 0;) {
+        BvhNode& n = bvh.nodes[k];
+        Aabb b;
+        if (n.leaf()) {
+            for (int i = n.first; i < n.first + n.count; ++i) b.grow(boxes[size_t(bvh.prims[size_t(i)])]);
+        } else {
+            b = node_box[size_t(n.first)];
+            b.grow(node_box[size_t(n.second)]);
+        }
+        node_box[k] = b;
+        const BvhNode rounded = node_with_box(b);
+        std::copy(rounded.lo, rounded.lo + 3, n.lo);
+        std::copy(rounded.hi, rounded.hi + 3, n.hi);
+    }
+    bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 }  // namespace fh

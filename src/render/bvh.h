@@ -50,7 +50,9 @@ struct BvhNode {
 };
 
 struct Bvh {
-    std::vector<BvhNode> nodes;  // nodes[0] is the root (absent: nothing bounded)
+    // nodes[0] is the root (absent: nothing bounded); a node's children
+    // always come after it.
+    std::vector<BvhNode> nodes;
     std::vector<std::int32_t> prims;  // the input's indices, in leaf order
     double build_ms = 0;
 
@@ -63,5 +65,11 @@ inline constexpr int kMaxLeafSize = 8;
 // The hierarchy over boxes[0 .. n). Boxes that are empty (a degenerate input)
 // are left out. pool == nullptr builds on the calling thread.
 Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool);
+
+// The same tree over new boxes of the same primitives (they moved): every
+// node's box recomputed bottom-up, the topology kept. Cheaper than a build
+// by far; the tree only gets worse for the traversal as the primitives
+// stray from where it was built. An input's box must not have become empty.
+void refit_bvh(Bvh& bvh, const std::vector<Aabb>& boxes);
 
 }  // namespace fh

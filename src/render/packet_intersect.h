@@ -12,7 +12,7 @@
 #include <optional>
 
 #include "render/bvh_traversal.h"
-#include "render/flat_scene.h"
+#include "render/flat_geometry.h"
 
 namespace fh {
 
@@ -25,7 +25,7 @@ struct HitLanes {
 // subset: what a tile's camera rays can hit (render/tile_culling.h), tested
 // one by one when it is short; nullptr or a long one: the BVH is walked.
 template <typename T>
-FH_HOT_INLINE HitLanes<T> closest_hits(const FlatScene<T>& scene, const RayPacket<T>& ray,
+FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const RayPacket<T>& ray,
                                          const LaneInts<T>& active, const PrimitiveSubset* subset = nullptr) {
     HitLanes<T> h{select(active, splat(kInfinity<T>), splat(T(0))), LaneInts<T>{} + kNoHit};
     // On a tie the lower primitive id wins, whatever order the BVH visits
@@ -39,45 +39,45 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatScene<T>& scene, const RayPacke
         h.prim = select(nearer, LaneInts<T>{} + id, h.prim);
     };
     auto reach = [&h]() FH_HOT_LAMBDA { return h.t * (T(1) + std::numeric_limits<T>::epsilon()); };
-    const int spheres = int(scene.spheres.size()), planes = int(scene.planes.size());
+    const int spheres = int(geometry.spheres.size()), planes = int(geometry.planes.size());
     std::optional<RayBasis<T>> basis;  // built once a triangle is reached
     // A short list (a tile's, or a small scene's every primitive) is tested
     // one by one in increasing id order, so the first of equal hits is kept.
-    const PrimitiveSubset& listed = subset && !subset->walk_bvh ? *subset : scene.everything;
+    const PrimitiveSubset& listed = subset && !subset->walk_bvh ? *subset : geometry.everything;
     if (!listed.walk_bvh) {
         const std::vector<int>& list = listed.prims;
         size_t k = 0;
         for (; k < list.size() && list[k] < spheres; ++k)
-            keep(scene.spheres[size_t(list[k])].intersect(ray, T(0), h.t), list[k]);
-        for (int p = 0; p < planes; ++p) keep(scene.planes[size_t(p)].intersect(ray, T(0), h.t), spheres + p);
-        if (k == list.size() || (scene.small && none(scene.few_triangles.reaches(ray) & (h.t > T(0))))) return h;
+            keep(geometry.spheres[size_t(list[k])].intersect(ray, T(0), h.t), list[k]);
+        for (int p = 0; p < planes; ++p) keep(geometry.planes[size_t(p)].intersect(ray, T(0), h.t), spheres + p);
+        if (k == list.size() || (geometry.small && none(geometry.few_triangles.reaches(ray) & (h.t > T(0))))) return h;
         const RayBasis<T> triangle_basis(ray);
         for (; k < list.size(); ++k)
-            keep(scene.triangles[size_t(list[k] - spheres)].intersect(triangle_basis, T(0), h.t), planes + list[k]);
+            keep(geometry.triangles[size_t(list[k] - spheres)].intersect(triangle_basis, T(0), h.t), planes + list[k]);
         return h;
     }
-    for (int p = 0; p < planes; ++p) keep(scene.planes[size_t(p)].intersect(ray, T(0), reach()), spheres + p);
+    for (int p = 0; p < planes; ++p) keep(geometry.planes[size_t(p)].intersect(ray, T(0), reach()), spheres + p);
     auto test_leaf = [&](int first, int count) FH_HOT_LAMBDA {
         for (int k = first; k < first + count; ++k) {
-            const int i = scene.bvh.prims[size_t(k)];
+            const int i = geometry.bvh.prims[size_t(k)];
             if (i < spheres) {
-                keep(scene.spheres[size_t(i)].intersect(ray, T(0), reach()), i);
+                keep(geometry.spheres[size_t(i)].intersect(ray, T(0), reach()), i);
             } else {
                 if (!basis) basis.emplace(ray);
-                keep(scene.triangles[size_t(i - spheres)].intersect(*basis, T(0), reach()), planes + i);
+                keep(geometry.triangles[size_t(i - spheres)].intersect(*basis, T(0), reach()), planes + i);
             }
         }
         return false;
     };
 
-    for_each_leaf(scene.bvh, scene.bvh_boxes.data(), ray, active, h.t, test_leaf);
+    for_each_leaf(geometry.bvh, geometry.bvh_boxes.data(), ray, active, h.t, test_leaf);
     return h;
 }
 
 // Per lane: some surface lies in (0, t_max) along the ray. Stops as soon as
 // every active ray is blocked.
 template <typename T>
-FH_HOT_INLINE LaneInts<T> occluded(const FlatScene<T>& scene, const RayPacket<T>& ray,
+FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& geometry, const RayPacket<T>& ray,
                                    const Lanes<T>& t_max, const LaneInts<T>& active) {
     LaneInts<T> blocked = LaneInts<T>{};
     Lanes<T> limit = select(active, t_max, splat(T(0)));  // 0 once a lane is blocked
@@ -86,44 +86,44 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatScene<T>& scene, const RayPacket<T>
         limit = select(blocked, splat(T(0)), limit);
         return all(blocked | ~active);
     };
-    for (const Plane<T>& p : scene.planes)
+    for (const Plane<T>& p : geometry.planes)
         if (block(p.intersect(ray, T(0), limit))) return blocked;
-    const int spheres = int(scene.spheres.size());
+    const int spheres = int(geometry.spheres.size());
     std::optional<RayBasis<T>> basis;  // built once a triangle is reached
     auto test_leaf = [&](int first, int count) FH_HOT_LAMBDA {
         for (int k = first; k < first + count; ++k) {
-            const int i = scene.bvh.prims[size_t(k)];
+            const int i = geometry.bvh.prims[size_t(k)];
             if (i < spheres) {
-                if (block(scene.spheres[size_t(i)].intersect(ray, T(0), limit))) return true;
+                if (block(geometry.spheres[size_t(i)].intersect(ray, T(0), limit))) return true;
             } else {
                 if (!basis) basis.emplace(ray);
-                if (block(scene.triangles[size_t(i - spheres)].intersect(*basis, T(0), limit))) return true;
+                if (block(geometry.triangles[size_t(i - spheres)].intersect(*basis, T(0), limit))) return true;
             }
         }
         return false;
     };
-    if (!scene.everything.walk_bvh) {  // a small scene: every sphere, the triangles behind their bound
-        const std::vector<int>& list = scene.everything.prims;
+    if (!geometry.everything.walk_bvh) {  // a small scene: every sphere, the triangles behind their bound
+        const std::vector<int>& list = geometry.everything.prims;
         size_t k = 0;
         for (; k < list.size() && list[k] < spheres; ++k)
-            if (block(scene.spheres[size_t(list[k])].intersect(ray, T(0), limit))) return blocked;
-        if (k == list.size() || none(scene.few_triangles.reaches(ray) & (limit > T(0)))) return blocked;
+            if (block(geometry.spheres[size_t(list[k])].intersect(ray, T(0), limit))) return blocked;
+        if (k == list.size() || none(geometry.few_triangles.reaches(ray) & (limit > T(0)))) return blocked;
         const RayBasis<T> triangle_basis(ray);
         for (; k < list.size(); ++k)
-            if (block(scene.triangles[size_t(list[k] - spheres)].intersect(triangle_basis, T(0), limit)))
+            if (block(geometry.triangles[size_t(list[k] - spheres)].intersect(triangle_basis, T(0), limit)))
                 return blocked;
         return blocked;
     }
-    for_each_leaf(scene.bvh, scene.bvh_boxes.data(), ray, active, limit, test_leaf);
+    for_each_leaf(geometry.bvh, geometry.bvh_boxes.data(), ray, active, limit, test_leaf);
     return blocked;
 }
 
 // The nearest hit of one ray (tests, the viewer): a packet of one, so the
 // same code as every other ray.
 template <typename T>
-Hit<T> closest_hit(const FlatScene<T>& scene, const Ray<T>& ray) {
-    const HitLanes<T> h = closest_hits(scene, RayPacket<T>::splat(ray), first_lanes<T>(1));
-    return h.prim[0] == kNoHit ? Hit<T>{} : scene.hit_of(h.t[0], int(h.prim[0]));
+Hit<T> closest_hit(const FlatGeometry<T>& geometry, const Ray<T>& ray) {
+    const HitLanes<T> h = closest_hits(geometry, RayPacket<T>::splat(ray), first_lanes<T>(1));
+    return h.prim[0] == kNoHit ? Hit<T>{} : geometry.hit_of(h.t[0], int(h.prim[0]));
 }
 
 }  // namespace fh

@@ -1,10 +1,19 @@
 #include "render/prepared_scene.h"
 
 #include <chrono>
+#include <type_traits>
 
 #include "render/flat_scene.h"
 
 namespace fh {
+
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
 
 PreparedScene::PreparedScene(const Scene& scene, const RenderSettings& settings, ThreadPool* pool)
     : settings_(settings) {
@@ -14,7 +23,25 @@ PreparedScene::PreparedScene(const Scene& scene, const RenderSettings& settings,
         float_ = std::make_unique<FlatScene<float>>(FlatScene<float>::build(scene, plan, pool));
     else
         double_ = std::make_unique<FlatScene<double>>(FlatScene<double>::build(scene, plan, pool));
-    build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    build_ms_ = ms_since(start);
+}
+
+PreparedScene PreparedScene::for_frame(const Scene& frame, bool shapes_moved, ThreadPool* pool) const {
+    const auto start = std::chrono::steady_clock::now();
+    PreparedScene p;
+    p.settings_ = settings_;
+    const EffectPlan plan = plan_effects(frame, settings_.effects, settings_.max_depth, settings_.prune);
+    auto next = [&](const auto& flat) {
+        using Flat = std::decay_t<decltype(*flat)>;
+        auto geometry = flat->geometry;
+        if (shapes_moved)
+            geometry = std::make_shared<const typename decltype(geometry)::element_type>(geometry->refit(frame, pool));
+        return std::make_unique<Flat>(Flat::build(frame, plan, std::move(geometry)));
+    };
+    if (float_) p.float_ = next(float_);
+    else p.double_ = next(double_);
+    p.build_ms_ = ms_since(start);
+    return p;
 }
 
 PreparedScene::~PreparedScene() = default;
@@ -27,9 +54,11 @@ FrameResult PreparedScene::render(const Camera& camera, ThreadPool* pool, const 
 }
 
 const EffectPlan& PreparedScene::plan() const { return float_ ? float_->plan : double_->plan; }
-double PreparedScene::bvh_build_ms() const { return float_ ? float_->bvh.build_ms : double_->bvh.build_ms; }
+double PreparedScene::bvh_build_ms() const {
+    return float_ ? float_->geometry->bvh.build_ms : double_->geometry->bvh.build_ms;
+}
 int PreparedScene::bvh_nodes() const {
-    return int(float_ ? float_->bvh.nodes.size() : double_->bvh.nodes.size());
+    return int(float_ ? float_->geometry->bvh.nodes.size() : double_->geometry->bvh.nodes.size());
 }
 
 FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,

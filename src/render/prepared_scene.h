@@ -1,8 +1,9 @@
 // The scene ready to trace: flattened into the tracer's precision with only
 // what the effect plan simulates (render/flat_scene.h) and its BVH built --
-// once, for every frame that shares the scene, its lights and the settings.
-// A movie whose camera moves prepares once and renders 300 frames; only the
-// camera is per frame.
+// once, for every frame that shares the scene's shapes. A movie whose camera
+// moves prepares once and renders 300 frames; a frame whose lights or
+// materials change re-flattens only those (for_frame), one whose shapes
+// move refits the BVH of a copy of the shapes instead of building it anew.
 #pragma once
 
 #include <memory>
@@ -19,6 +20,12 @@ public:
     // pool: builds the BVH on it (nullptr: on the calling thread).
     PreparedScene(const Scene& scene, const RenderSettings& settings, ThreadPool* pool = nullptr);
     ~PreparedScene();
+
+    // The same scene at another state of its lights, materials and shapes
+    // (a movie's frame: same primitives, other values). The effect plan is
+    // worked out for that state; the shapes are shared when `shapes_moved`
+    // is false, else refitted (render/flat_geometry.h). pool: for a rebuild.
+    PreparedScene for_frame(const Scene& frame, bool shapes_moved, ThreadPool* pool = nullptr) const;
     PreparedScene(PreparedScene&&) noexcept;
     PreparedScene& operator=(PreparedScene&&) noexcept;
 
@@ -33,11 +40,13 @@ public:
 
     const RenderSettings& settings() const { return settings_; }
     const EffectPlan& plan() const;
-    double build_ms() const { return build_ms_; }  // flattening and the BVH
-    double bvh_build_ms() const;
+    double build_ms() const { return build_ms_; }  // flattening and the BVH (or its refit)
+    double bvh_build_ms() const;                   // of which the BVH
     int bvh_nodes() const;
 
 private:
+    PreparedScene() = default;
+
     RenderSettings settings_;
     std::unique_ptr<FlatScene<float>> float_;
     std::unique_ptr<FlatScene<double>> double_;

@@ -30,6 +30,7 @@
 #include "core/fast_math.h"
 #include "core/offset.h"
 #include "render/background.h"
+#include "render/flat_scene.h"
 #include "render/packet_intersect.h"
 #include "render/stats.h"
 
@@ -42,7 +43,7 @@ public:
     static constexpr bool kSpecularTerm = (F & kSpecular) != 0;
     static constexpr bool kReflections = (F & kGlazing) != 0;
 
-    explicit Shader(const FlatScene<T>& scene) : scene_(scene) {}
+    explicit Shader(const FlatScene<T>& scene) : scene_(scene), geometry_(*scene.geometry) {}
 
     // The colour of each active ray of a packet (unclamped); 0 in the others.
     // first_hits: the primitives the rays' first hits can be on (a tile's
@@ -54,7 +55,7 @@ public:
         ColorLanes<T> colour = black;
         Lanes<T> weight = splat(T(1));
         for (int depth = 0;; ++depth) {
-            const HitLanes<T> h = closest_hits(scene_, ray, active, depth == 0 ? first_hits : nullptr);
+            const HitLanes<T> h = closest_hits(geometry_, ray, active, depth == 0 ? first_hits : nullptr);
             const LaneInts<T> hit = h.prim != kNoHit;
             ColorLanes<T> local = select(active & ~hit, background(ray.direction), black);
             if (none(hit)) {
@@ -130,21 +131,26 @@ private:
         const Lanes<T> zero = splat(T(0));
         const Vec3Lanes<T> p = ray.at(select(hit, h.t, zero));
         ColorLanes<T> ambient;
+        Vec3Lanes<T> geometric;  // the face's normal: where secondary rays start
         for_each_distinct(h.prim, hit, [&](int prim, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
-            const PrimitiveSurface<T>& surface = scene_.surfaces[size_t(prim)];
-            Vec3Lanes<T> point, normal;
-            surface.project(p, point, normal);
+            Vec3Lanes<T> point, normal, shading;
+            geometry_.project(prim, p, point, normal, shading);
             put(s.point, point, lanes, first);
-            put(s.normal, normal, lanes, first);
-            const MaterialShading<T>& m = scene_.shading[size_t(surface.material)];
+            put(geometric, normal, lanes, first);
+            put(s.normal, shading, lanes, first);
+            const int material = geometry_.surfaces[size_t(prim)].material;
+            const MaterialShading<T>& m = scene_.shading[size_t(material)];
             put(ambient, Vec3Lanes<T>::splat(m.ambient), lanes, first);
             put(s.reflectivity, splat(m.reflectivity), lanes, first);
             put(s.glazed, m.glazed ? lanes : LaneInts<T>{}, lanes, first);
-            put(s.material, LaneInts<T>{} + surface.material, lanes, first);
+            put(s.material, LaneInts<T>{} + material, lanes, first);
         });
         local += select(hit, ambient, Vec3Lanes<T>{zero, zero, zero});
-        s.normal = FlatScene<T>::facing(s.normal, ray.direction);
-        s.origin = offset_origin(s.point, s.normal);
+        // Both normals turn with the face: a smooth normal stays on the
+        // side of the face the ray came from.
+        const LaneInts<T> flip = dot(geometric, ray.direction) > T(0);
+        s.normal = select(flip, -s.normal, s.normal);
+        s.origin = offset_origin(s.point, select(flip, -geometric, geometric));
     }
 
     void add_lights(const RayPacket<T>& ray, const SurfaceLanes& s, const LaneInts<T>& hit,
@@ -174,7 +180,7 @@ private:
         if (none(lit)) return;
         if constexpr (kShadowRays) {
             counts.shadow += std::uint64_t(count(lit));
-            lit &= ~occluded(scene_, {s.origin, light.to_light}, light.distance, lit);
+            lit &= ~occluded(geometry_, {s.origin, light.to_light}, light.distance, lit);
             if (none(lit)) return;
         }
         // Per material the lit points show: its colour terms with this light,
@@ -214,6 +220,7 @@ private:
     }
 
     const FlatScene<T>& scene_;
+    const FlatGeometry<T>& geometry_;
 };
 
 // Calls fn(shader) with the shader variant for the scene's effect plan.

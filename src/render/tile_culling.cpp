@@ -35,12 +35,12 @@ bool TileFrustum::may_hit(const dvec3& center, double radius) const {
 }
 
 template <typename T>
-void cull_to_frustum(const FlatScene<T>& scene, const TileFrustum& frustum, PrimitiveSubset& out) {
+void cull_to_frustum(const FlatGeometry<T>& geometry, const TileFrustum& frustum, PrimitiveSubset& out) {
     out.prims.clear();
     out.walk_bvh = false;
-    const Bvh& bvh = scene.bvh;
+    const Bvh& bvh = geometry.bvh;
     if (bvh.empty()) return;
-    const int spheres = int(scene.spheres.size());
+    const int spheres = int(geometry.spheres.size());
     // A box as its bounding sphere, a triangle as the sphere around its box.
     auto box_may_hit = [&](const dvec3& lo, const dvec3& hi) {
         return frustum.may_hit(0.5 * (lo + hi), 0.5 * glm::length(hi - lo));
@@ -60,9 +60,9 @@ void cull_to_frustum(const FlatScene<T>& scene, const TileFrustum& frustum, Prim
             const int i = bvh.prims[size_t(k)];
             bool may = false;
             if (i < spheres) {
-                may = frustum.may_hit(dvec3(scene.spheres[size_t(i)].center), double(scene.spheres[size_t(i)].radius));
+                may = frustum.may_hit(dvec3(geometry.spheres[size_t(i)].center), double(geometry.spheres[size_t(i)].radius));
             } else {
-                const Triangle<T>& t = scene.triangles[size_t(i - spheres)];
+                const Triangle<T>& t = geometry.triangles[size_t(i - spheres)];
                 const dvec3 a(t.v0), b(t.v1), c(t.v2);
                 may = box_may_hit(glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)));
             }
@@ -78,7 +78,7 @@ void cull_to_frustum(const FlatScene<T>& scene, const TileFrustum& frustum, Prim
     std::sort(out.prims.begin(), out.prims.end());
 }
 
-template void cull_to_frustum(const FlatScene<float>&, const TileFrustum&, PrimitiveSubset&);
-template void cull_to_frustum(const FlatScene<double>&, const TileFrustum&, PrimitiveSubset&);
+template void cull_to_frustum(const FlatGeometry<float>&, const TileFrustum&, PrimitiveSubset&);
+template void cull_to_frustum(const FlatGeometry<double>&, const TileFrustum&, PrimitiveSubset&);
 
 }  // namespace fh

@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "render/flat_scene.h"
+#include "render/flat_geometry.h"
 #include "scene/camera.h"
 
 namespace fh {
@@ -29,10 +29,10 @@ private:
     dvec3 normal_[4];  // unit, pointing inside
 };
 
-// The spheres and triangles of `scene` the frustum may hit, into `out`: found
+// The spheres and triangles of `geometry` the frustum may hit, into `out`: found
 // by walking the BVH with the frustum; more than kMaxSubset of them and
 // `out` says to walk the BVH per packet instead.
 template <typename T>
-void cull_to_frustum(const FlatScene<T>& scene, const TileFrustum& frustum, PrimitiveSubset& out);
+void cull_to_frustum(const FlatGeometry<T>& geometry, const TileFrustum& frustum, PrimitiveSubset& out);
 
 }  // namespace fh

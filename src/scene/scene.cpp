@@ -17,4 +17,12 @@ void keep_only_lights(Scene& scene, const std::vector<std::string>& names) {
     keep(scene.spot_lights, names);
 }
 
+void place_surface(Scene& scene, const NamedSurface& surface, const Transform& transform) {
+    const PlacedMesh placed = place(*surface.mesh, transform);
+    std::copy(placed.triangles.begin(), placed.triangles.end(), scene.triangles.begin() + std::ptrdiff_t(surface.index));
+    if (placed.vertex_normals.empty()) return;
+    std::copy(placed.vertex_normals.begin(), placed.vertex_normals.end(),
+              scene.vertex_normals.begin() + std::ptrdiff_t(surface.index));
+}
+
 }  // namespace fh

@@ -4,6 +4,8 @@
 // its own flat copy in its scalar type (render/flat_scene.h).
 #pragma once
 
+#include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,9 +15,22 @@
 #include "scene/camera.h"
 #include "scene/lights.h"
 #include "scene/material.h"
+#include "scene/mesh.h"
 #include "scene/spot_light.h"
 
 namespace fh {
+
+enum class SurfaceKind { sphere, plane, triangle, mesh };
+
+// A surface the file names (`name:`): what a movie addresses to animate it.
+struct NamedSurface {
+    std::string name;
+    SurfaceKind kind = SurfaceKind::sphere;
+    size_t index = 0;  // sphere, plane: into spheres or planes; triangle, mesh: its first triangle
+    size_t count = 1;  // triangle, mesh: its triangles (a mesh's that were kept on loading)
+    Transform transform;               // triangle, mesh: as the file gives it (a triangle: none)
+    std::shared_ptr<const Mesh> mesh;  // triangle, mesh: in its own space
+};
 
 struct Scene {
     std::vector<std::string> material_names;  // parallel to materials
@@ -23,10 +38,14 @@ struct Scene {
     std::vector<Sphere<double>> spheres;
     std::vector<Plane<double>> planes;
     std::vector<Triangle<double>> triangles;
+    // Empty, or one per triangle: the vertex normals smooth shading
+    // interpolates (all three zero: the triangle is shaded flat).
+    std::vector<std::array<dvec3, 3>> vertex_normals;
     std::vector<AmbientLight<double>> ambient_lights;  // at most one
     std::vector<DirectionalLight<double>> directional_lights;
     std::vector<SpotLight<double>> spot_lights;
     std::vector<Camera> cameras;
+    std::vector<NamedSurface> named_surfaces;
     int meshes = 0;                        // mesh files read into `triangles`
     size_t degenerate_mesh_triangles = 0;  // their zero-area triangles, left out
 
@@ -35,7 +54,16 @@ struct Scene {
             if (c.name == name) return &c;
         return nullptr;
     }
+    const NamedSurface* find_surface(const std::string& name) const {
+        for (const NamedSurface& s : named_surfaces)
+            if (s.name == name) return &s;
+        return nullptr;
+    }
 };
+
+// A named triangle or mesh placed anew by `transform`: its triangles (and
+// vertex normals) in the scene replaced, one for one.
+void place_surface(Scene& scene, const NamedSurface& surface, const Transform& transform);
 
 // Switches on the named lights and off all others (a movie's `lights:` list).
 // Lights that are off stay in the scene, so a render that does not prune

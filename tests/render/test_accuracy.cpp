@@ -82,8 +82,8 @@ TEST(Accuracy, AdaptiveSpendsSamplesOnlyAtEdges) {
 bool glazed_at(const Scene& s, int x, int y) {
     const auto flat = FlatScene<double>::build(s, plan_effects(s, Effects{}, 5));
     const Ray<double> ray = CameraRays<double>(s.cameras.front()).generate(x + 0.5, y + 0.5);
-    const Hit<double> hit = closest_hit(flat, ray);
-    return hit.found() && flat.shading[size_t(flat.surface(ray, hit).material)].glazed;
+    const Hit<double> hit = closest_hit(*flat.geometry, ray);
+    return hit.found() && flat.shading[size_t(flat.geometry->surface(ray, hit).material)].glazed;
 }
 
 TEST(Accuracy, OneMoreLevelOfDepthChangesOnlyGlazedPixels) {

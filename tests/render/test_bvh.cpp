@@ -38,7 +38,7 @@ Scene soup(int triangles, int spheres, unsigned seed) {
 // The nearest hits by testing every primitive, lowest id first on a tie:
 // the rule closest_hits keeps, whatever order its walk takes.
 template <typename T>
-HitLanes<T> brute_force_hits(const FlatScene<T>& f, const RayPacket<T>& ray, const LaneInts<T>& active) {
+HitLanes<T> brute_force_hits(const FlatGeometry<T>& f, const RayPacket<T>& ray, const LaneInts<T>& active) {
     HitLanes<T> h{select(active, splat(kInfinity<T>), splat(T(0))), LaneInts<T>{} + kNoHit};
     auto keep = [&](const Lanes<T>& t, int id) {
         const LaneInts<T> nearer = (t < h.t) | ((t == h.t) & (h.prim > id));
@@ -58,7 +58,7 @@ HitLanes<T> brute_force_hits(const FlatScene<T>& f, const RayPacket<T>& ray, con
 }
 
 template <typename T>
-LaneInts<T> brute_force_blocked(const FlatScene<T>& f, const RayPacket<T>& ray, const Lanes<T>& t_max,
+LaneInts<T> brute_force_blocked(const FlatGeometry<T>& f, const RayPacket<T>& ray, const Lanes<T>& t_max,
                                 const LaneInts<T>& active) {
     LaneInts<T> blocked{};
     const Lanes<T> limit = select(active, t_max, splat(T(0)));
@@ -106,7 +106,7 @@ TYPED_TEST(BvhAgainstBruteForce, SameNearestHitAndSameShadowsForAMillionRays) {
   // A soup walked through the BVH, and one small enough to be tested whole.
   for (const auto& [triangles, spheres] : {std::pair{400, 40}, std::pair{10, 4}}) {
     const Scene s = soup(triangles, spheres, 7);
-    const auto f = FlatScene<T>::build(s, plan_effects(s, Effects{}, 5));
+    const auto f = FlatGeometry<T>::build(s);
     ASSERT_FALSE(f.bvh.empty());
     EXPECT_EQ(f.small, triangles + spheres <= int(kMaxSubset));
     std::mt19937_64 rng(11);
@@ -144,7 +144,7 @@ TYPED_TEST(BvhAgainstBruteForce, NoRayLeaksThroughAClosedMesh) {
     robust::add_material(s, "m", robust::material(dvec3(200), 0.2, 0.8, 0, 1));
     s.triangles = icosphere(3, 1.0, 0);
     ASSERT_EQ(s.triangles.size(), 1280u);
-    const auto f = FlatScene<T>::build(s, plan_effects(s, Effects{}, 5));
+    const auto f = FlatGeometry<T>::build(s);
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(-1, 1);
     std::uniform_int_distribution<size_t> pick(0, s.triangles.size() - 1);

@@ -1,0 +1,207 @@
+#include "render/flat_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fh {
+
+namespace {
+
+// A box computed in double and padded by a relative 1e-5, so that no
+// rounding in the tracer's precision can put a hit outside it.
+Aabb padded(Aabb b) {
+    const double pad = 1e-5 * (glm::length(b.hi - b.lo) + std::max(glm::length(b.lo), glm::length(b.hi)));
+    b.lo -= pad;
+    b.hi += pad;
+    return b;
+}
+
+// The BVH's input: the spheres' boxes, then the triangles' (scene indices,
+// in the flat order).
+std::vector<Aabb> bounds_of(const Scene& scene, const std::vector<std::int32_t>& triangles) {
+    std::vector<Aabb> boxes;
+    boxes.reserve(scene.spheres.size() + triangles.size());
+    for (const auto& s : scene.spheres) boxes.push_back(padded({s.center - s.radius, s.center + s.radius}));
+    for (const std::int32_t i : triangles) {
+        const Triangle<double>& t = scene.triangles[size_t(i)];
+        Aabb b;
+        b.grow(t.v0);
+        b.grow(t.v1);
+        b.grow(t.v2);
+        boxes.push_back(padded(b));
+    }
+    return boxes;
+}
+
+// The padded bounding sphere of a few triangles.
+template <typename T>
+BoundingSphere<T> bounding_sphere(const Scene& scene, const std::vector<std::int32_t>& triangles) {
+    Aabb box;
+    for (const std::int32_t i : triangles) {
+        const Triangle<double>& t = scene.triangles[size_t(i)];
+        box.grow(t.v0);
+        box.grow(t.v1);
+        box.grow(t.v2);
+    }
+    if (box.empty()) return {};
+    const dvec3 center = box.center();
+    double r = 0;
+    for (const std::int32_t i : triangles) {
+        const Triangle<double>& t = scene.triangles[size_t(i)];
+        for (const dvec3& p : {t.v0, t.v1, t.v2}) r = std::max(r, glm::length(p - center));
+    }
+    r = r * (1 + 1e-4) + 1e-4 * max_abs_component(center) + 1e-30;
+    return {Vec3<T>(center), T(r * r)};
+}
+
+bool smooth(const Scene& scene, size_t i) {
+    if (scene.vertex_normals.empty()) return false;
+    const auto& n = scene.vertex_normals[i];
+    return n[0] != dvec3(0) || n[1] != dvec3(0) || n[2] != dvec3(0);
+}
+
+// Spheres, planes and the triangles listed (scene indices, in this order)
+// with their surfaces, in primitive id order.
+template <typename T>
+void flatten(const Scene& scene, FlatGeometry<T>& g) {
+    for (const auto& s : scene.spheres) {
+        g.spheres.push_back({Vec3<T>(s.center), T(s.radius), s.material});
+        g.surfaces.push_back(surface_of(g.spheres.back()));
+    }
+    for (const auto& p : scene.planes) {
+        g.planes.push_back({Vec3<T>(p.normal), T(p.distance), p.material});
+        g.surfaces.push_back(surface_of(g.planes.back()));
+    }
+    g.triangles.reserve(g.triangle_source.size());
+    g.surfaces.reserve(g.surfaces.size() + g.triangle_source.size());
+    for (const std::int32_t i : g.triangle_source) {
+        const Triangle<double>& t = scene.triangles[size_t(i)];
+        g.triangles.push_back({Vec3<T>(t.v0), Vec3<T>(t.v1), Vec3<T>(t.v2), Vec3<T>(t.normal), t.material});
+        g.surfaces.push_back(surface_of(g.triangles.back()));
+        if (!smooth(scene, size_t(i))) continue;
+        const SmoothTriangle<T> st = SmoothTriangle<T>::make(t, scene.vertex_normals[size_t(i)]);
+        // A triangle too small for T's range to solve for weights stays flat.
+        if (!std::isfinite(st.inv_denominator)) continue;
+        g.surfaces.back().smooth = int(g.smooth_triangles.size());
+        g.smooth_triangles.push_back(st);
+    }
+}
+
+// The triangles (and their surfaces and sources) renumbered in the order
+// the BVH's leaves list them, so a leaf's triangles lie next to each other
+// in memory: a walk reads them in runs instead of from anywhere in a
+// million. (Small scenes keep the file's order.)
+template <typename T>
+void in_leaf_order(FlatGeometry<T>& g) {
+    const int ns = int(g.spheres.size()), np = int(g.planes.size());
+    std::vector<Triangle<T>> triangles;
+    std::vector<PrimitiveSurface<T>> surfaces(g.surfaces.begin(), g.surfaces.begin() + ns + np);
+    std::vector<std::int32_t> source;
+    triangles.reserve(g.triangles.size());
+    source.reserve(g.triangles.size());
+    for (std::int32_t& i : g.bvh.prims) {
+        if (i < ns) continue;
+        triangles.push_back(g.triangles[size_t(i - ns)]);
+        surfaces.push_back(g.surfaces[size_t(np + i)]);
+        source.push_back(g.triangle_source[size_t(i - ns)]);
+        i = ns + std::int32_t(triangles.size()) - 1;
+    }
+    g.triangles.swap(triangles);
+    g.surfaces.swap(surfaces);
+    g.triangle_source.swap(source);
+}
+
+template <typename T>
+void choose_small(const Scene& scene, FlatGeometry<T>& g) {
+    g.small = g.bvh.prims.size() <= kMaxSubset;
+    if (!g.small) return;
+    g.few_triangles = bounding_sphere<T>(scene, g.triangle_source);
+    g.everything.walk_bvh = false;
+    g.everything.prims.assign(g.bvh.prims.begin(), g.bvh.prims.end());
+    std::sort(g.everything.prims.begin(), g.everything.prims.end());
+}
+
+}  // namespace
+
+template <typename T>
+SmoothTriangle<T> SmoothTriangle<T>::make(const Triangle<double>& t, const std::array<dvec3, 3>& normals) {
+    const dvec3 e1 = t.v1 - t.v0, e2 = t.v2 - t.v0;
+    const double d00 = glm::dot(e1, e1), d01 = glm::dot(e1, e2), d11 = glm::dot(e2, e2);
+    // Each vertex normal on the face normal's side (a file may wind its
+    // faces against its normals); one nearly in the face's plane would let
+    // the mix vanish, so it gives way to the face normal.
+    auto oriented = [&](const dvec3& n) {
+        const double scale = max_abs_component(n);
+        if (!(scale > 0) || !std::isfinite(scale)) return t.normal;
+        const dvec3 u = glm::normalize(n / scale);
+        const double along = glm::dot(u, t.normal);
+        if (std::abs(along) < 1e-3) return t.normal;
+        return along < 0 ? -u : u;
+    };
+    SmoothTriangle s;
+    s.v0 = Vec3<T>(t.v0);
+    s.e1 = Vec3<T>(e1);
+    s.e2 = Vec3<T>(e2);
+    s.d00 = T(d00);
+    s.d01 = T(d01);
+    s.d11 = T(d11);
+    s.inv_denominator = T(1 / (d00 * d11 - d01 * d01));
+    s.n0 = Vec3<T>(oriented(normals[0]));
+    s.n1 = Vec3<T>(oriented(normals[1]));
+    s.n2 = Vec3<T>(oriented(normals[2]));
+    return s;
+}
+
+template <typename T>
+FlatGeometry<T> FlatGeometry<T>::build(const Scene& scene, ThreadPool* pool) {
+    FlatGeometry<T> g;
+    // A triangle without area can never be hit: it stays out of the loop.
+    for (size_t i = 0; i < scene.triangles.size(); ++i)
+        if (!scene.triangles[i].degenerate()) g.triangle_source.push_back(std::int32_t(i));
+    flatten(scene, g);
+    g.bvh = build_bvh(bounds_of(scene, g.triangle_source), pool);
+    choose_small(scene, g);
+    if (!g.small) in_leaf_order(g);
+    g.bvh_boxes = boxes_of<T>(g.bvh);
+    return g;
+}
+
+template <typename T>
+FlatGeometry<T> FlatGeometry<T>::refit(const Scene& moved, ThreadPool* pool) const {
+    size_t kept = 0;
+    for (const std::int32_t i : triangle_source) {
+        if (size_t(i) >= moved.triangles.size() || moved.triangles[size_t(i)].degenerate()) return build(moved, pool);
+    }
+    for (const auto& t : moved.triangles) kept += !t.degenerate();
+    if (moved.spheres.size() != spheres.size() || moved.planes.size() != planes.size() ||
+        kept != triangles.size())
+        return build(moved, pool);
+    FlatGeometry<T> g;
+    g.triangle_source = triangle_source;
+    flatten(moved, g);
+    g.bvh = bvh;
+    refit_bvh(g.bvh, bounds_of(moved, g.triangle_source));
+    g.bvh_boxes = boxes_of<T>(g.bvh);
+    choose_small(moved, g);
+    return g;
+}
+
+template <typename T>
+SurfacePoint<T> FlatGeometry<T>::surface(const Ray<T>& ray, const Hit<T>& hit) const {
+    const int ns = int(spheres.size()), np = int(planes.size());
+    int prim = hit.index;
+    if (hit.kind == ShapeKind::plane) prim += ns;
+    if (hit.kind == ShapeKind::triangle) prim += ns + np;
+    const RayPacket<T> packet = RayPacket<T>::splat(ray);
+    Vec3Lanes<T> point, normal, shading;
+    project(prim, packet.at(splat(hit.t)), point, normal, shading);
+    const LaneInts<T> flip = dot(normal, packet.direction) > T(0);
+    normal = select(flip, -normal, normal);
+    shading = select(flip, -shading, shading);
+    return {point.lane(0), normal.lane(0), shading.lane(0), surfaces[size_t(prim)].material};
+}
+
+template struct FlatGeometry<float>;
+template struct FlatGeometry<double>;
+
+}  // namespace fh

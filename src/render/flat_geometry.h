@@ -1,0 +1,200 @@
+// The shapes as the tracer reads them: contiguous arrays per shape kind in
+// the tracer's scalar type, the BVH over them, and per primitive what shading
+// needs to turn a hit into a point and a normal. Built once per scene and
+// shared by every frame whose geometry does not move; a frame whose objects
+// move gets a refitted copy (same tree, new boxes). Nothing here knows about
+// lights or materials beyond a material's index (render/flat_scene.h).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/hit.h"
+#include "render/bvh_traversal.h"
+#include "scene/scene.h"
+
+namespace fh {
+
+class ThreadPool;
+
+// The bounded primitives a tile's camera rays can hit (render/tile_culling.h),
+// as indices into the BVH's input (spheres, then triangles), in increasing
+// order. A short list is tested one by one, which for a few primitives is
+// faster than walking the BVH; past kMaxSubset the walk is used instead.
+struct PrimitiveSubset {
+    std::vector<int> prims;
+    bool walk_bvh = true;  // too many (or not culled): walk the BVH
+};
+inline constexpr size_t kMaxSubset = 16;
+
+// Primitive ids number the spheres, then the planes, then the (kept) triangles.
+inline constexpr int kNoHit = -1;
+
+// A padded sphere around all of a small scene's triangles (FlatGeometry::
+// few_triangles). A ray that misses it skips them all, with no division and
+// no walk: for a scene of a few primitives -- the report's has seven --
+// that is faster than any BVH.
+template <typename T>
+struct BoundingSphere {
+    Vec3<T> center{0};
+    T radius2 = 0;  // padded so rounding never culls a real hit
+
+    // Per lane: the ray meets the sphere ahead of its origin (or starts
+    // inside it). A plain test is enough for a padded bound; the robust one
+    // of Sphere costs more. The far root b + sqrt(disc) is ahead when b > 0
+    // or disc > b^2, which needs no square root.
+    FH_HOT_INLINE LaneInts<T> reaches(const RayPacket<T>& ray) const {
+        const Vec3Lanes<T> f = ray.origin - center;
+        const Lanes<T> b = -dot(f, ray.direction);
+        const Vec3Lanes<T> closest = f + b * ray.direction;
+        const Lanes<T> disc = radius2 - dot(closest, closest);
+        return (disc >= T(0)) & ((b > T(0)) | (disc > b * b));
+    }
+};
+
+// A smooth-shaded triangle's vertex normals, with what turns a point of the
+// triangle into barycentric weights: p - v0 = b1 e1 + b2 e2, solved by the
+// normal equations (Ericson, Real-Time Collision Detection, 3.4).
+template <typename T>
+struct SmoothTriangle {
+    Vec3<T> v0{0}, e1{0}, e2{0};
+    T d00 = 0, d01 = 0, d11 = 0, inv_denominator = 0;
+    Vec3<T> n0{0}, n1{0}, n2{0};  // unit, on the side of the face normal
+
+    static SmoothTriangle make(const Triangle<double>& t, const std::array<dvec3, 3>& normals);
+
+    // At points p of the triangle: the vertex normals mixed by p's weights,
+    // unit. Weights are clamped to the triangle, so a point rounding puts
+    // just outside an edge gets that edge's normal, not an extrapolated one.
+    FH_HOT_INLINE Vec3Lanes<T> normal_at(const Vec3Lanes<T>& p) const {
+        const Vec3Lanes<T> d = p - v0;
+        const Lanes<T> d20 = dot(d, e1), d21 = dot(d, e2);
+        const Lanes<T> zero = splat(T(0)), one = splat(T(1));
+        Lanes<T> b1 = max(zero, min(one, (d11 * d20 - d01 * d21) * inv_denominator));
+        Lanes<T> b2 = max(zero, min(one, (d00 * d21 - d01 * d20) * inv_denominator));
+        const Lanes<T> over = max(one, b1 + b2);  // b0 = 1 - b1 - b2 >= 0
+        b1 = b1 / over;
+        b2 = b2 / over;
+        return normalize((one - b1 - b2) * n0 + b1 * n1 + b2 * n2);
+    }
+};
+
+// Where a primitive's surface is.
+template <typename T>
+struct PrimitiveSurface {
+    bool sphere = false;  // else flat: a plane or a triangle
+    Vec3<T> anchor{0};    // sphere: the centre; flat: a point on it
+    Vec3<T> normal{0};    // flat: the unit normal
+    T radius = 0;         // sphere
+    int material = -1;
+    int smooth = -1;      // a smooth triangle: its index in FlatGeometry::smooth_triangles
+
+    // For points p on the surface (up to the rounding of a ray's travel): p
+    // projected back onto it -- its error is then a few ulps of its own
+    // coordinates, not of the ray's travel -- and the unit geometric normal
+    // there (facing outward, not yet the ray).
+    FH_HOT_INLINE void project(const Vec3Lanes<T>& p, Vec3Lanes<T>& point,
+                               Vec3Lanes<T>& unit_normal) const {
+        if (sphere) {
+            unit_normal = normalize(p - anchor);
+            point = anchor + radius * unit_normal;
+        } else {
+            unit_normal = Vec3Lanes<T>::splat(normal);
+            point = p - dot(normal, p - anchor) * normal;
+        }
+    }
+
+    // One point (tests): the same formula with p in every lane.
+    void project(const Vec3<T>& p, Vec3<T>& point, Vec3<T>& unit_normal) const {
+        Vec3Lanes<T> q, n;
+        project(Vec3Lanes<T>::splat(p), q, n);
+        point = q.lane(0);
+        unit_normal = n.lane(0);
+    }
+};
+
+template <typename T>
+PrimitiveSurface<T> surface_of(const Sphere<T>& s) {
+    return {true, s.center, Vec3<T>(0), s.radius, s.material};
+}
+template <typename T>
+PrimitiveSurface<T> surface_of(const Plane<T>& p) {
+    return {false, p.distance * p.normal, p.normal, T(0), p.material};
+}
+template <typename T>
+PrimitiveSurface<T> surface_of(const Triangle<T>& t) {
+    return {false, t.v0, t.normal, T(0), t.material};
+}
+
+// The normal turned to face the ray (report 8.4).
+template <typename T>
+FH_HOT_INLINE Vec3Lanes<T> facing(const Vec3Lanes<T>& normal, const Vec3Lanes<T>& direction) {
+    return select(dot(normal, direction) > T(0), -normal, normal);
+}
+
+// One hit's point and normals (tests, the viewer).
+template <typename T>
+struct SurfacePoint {
+    Vec3<T> point{0};
+    Vec3<T> normal{0};   // the geometric normal, facing the ray
+    Vec3<T> shading{0};  // what lighting uses: the smooth normal, else `normal`
+    int material = -1;
+};
+
+template <typename T>
+struct FlatGeometry {
+    std::vector<Sphere<T>> spheres;
+    std::vector<Plane<T>> planes;
+    std::vector<Triangle<T>> triangles;
+    // Over the spheres and triangles: index i < spheres.size() is sphere i,
+    // any other is triangle i - spheres.size().
+    Bvh bvh;
+    std::vector<NodeBox<T>> bvh_boxes;  // bvh.nodes' boxes in T
+    // At most kMaxSubset spheres and triangles: no BVH walk, every sphere
+    // tested, the triangles behind one bounding sphere, all in id order.
+    bool small = false;
+    BoundingSphere<T> few_triangles;
+    // A small scene's every sphere and triangle, as a list in id order
+    // (render/packet_intersect.h tests it one by one); larger: walk_bvh.
+    PrimitiveSubset everything;
+    std::vector<PrimitiveSurface<T>> surfaces;  // by primitive id
+    std::vector<SmoothTriangle<T>> smooth_triangles;
+    // triangles[k] is the Scene's triangles[triangle_source[k]]: a refit
+    // reads the moved triangles in the same order.
+    std::vector<std::int32_t> triangle_source;
+
+    // pool: the BVH is built on it (nullptr: on the calling thread).
+    static FlatGeometry build(const Scene& scene, ThreadPool* pool = nullptr);
+
+    // The same tree over `moved`, a scene with the same primitives in new
+    // places (a movie's frame): only boxes and shapes are recomputed. When
+    // that is not possible -- a primitive appeared or vanished, a triangle
+    // lost its area -- the geometry is built anew instead.
+    FlatGeometry refit(const Scene& moved, ThreadPool* pool = nullptr) const;
+
+    Hit<T> hit_of(T t, int prim) const {
+        const int ns = int(spheres.size()), np = int(planes.size());
+        if (prim < ns) return {t, ShapeKind::sphere, prim};
+        if (prim < ns + np) return {t, ShapeKind::plane, prim - ns};
+        return {t, ShapeKind::triangle, prim - ns - np};
+    }
+
+    // For the lanes of points p on primitive `prim`: the projected point, its
+    // geometric normal and its shading normal (both outward, not yet facing
+    // the ray).
+    FH_HOT_INLINE void project(int prim, const Vec3Lanes<T>& p, Vec3Lanes<T>& point, Vec3Lanes<T>& normal,
+                               Vec3Lanes<T>& shading) const {
+        const PrimitiveSurface<T>& s = surfaces[size_t(prim)];
+        s.project(p, point, normal);
+        shading = s.smooth < 0 ? normal : smooth_triangles[size_t(s.smooth)].normal_at(point);
+    }
+
+    // Point, normals facing the ray, and material of one hit (tests): the
+    // formula shading uses, on a packet of one.
+    SurfacePoint<T> surface(const Ray<T>& ray, const Hit<T>& hit) const;
+};
+
+extern template struct FlatGeometry<float>;
+extern template struct FlatGeometry<double>;
+
+}  // namespace fh
