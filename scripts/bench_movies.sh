@@ -38,7 +38,7 @@ for ((r = 1; r <= rounds; r++)); do
   FIRSTHIT=$wrapper "$here/make_movies.sh" "$outdir" >&2
   t1=$(now)
   for m in movie1 movie2; do
-    "$here/encode.sh" "$outdir/$m" "$outdir/.bench-$m.mp4" >/dev/null
+    "$here/encode.sh" "$outdir/$m" "$outdir/.bench-$m.mp4" --fps 30 >/dev/null
     rm -f "$outdir/.bench-$m.mp4"
   done
   t2=$(now)

@@ -1,57 +1,127 @@
 #!/usr/bin/env bash
-# Encodes frames into an MP4: H.264, yuv420p (plays everywhere), the movie's
-# fps, +faststart (plays while downloading). The MP4 is written under a
-# temporary name and renamed, so it is whole or absent.
+# Encodes a movie's frames into a video whose format follows OUT's extension
+# (in any case: .mp4 or .MP4):
+#   .mp4   H.264 (x264), yuv420p (plays everywhere), +faststart (plays while
+#          downloading); odd sides are padded by a pixel
+#   .mov   H.264 in QuickTime, the same
+#   .webm  VP9 (libvpx-vp9), yuv420p, constant quality (-crf 32 -b:v 0)
+#   .gif   a GIF with its own 256-colour palette (palettegen + paletteuse)
+# Any other extension, or none, is refused before anything runs. The video
+# is written under a temporary name in OUT's folder and renamed, so it is
+# whole or absent.
 #
-#   scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N] [--threads N]
-#       a folder of frame_0000.png, frame_0001.png, ... (default fps: 30)
-#   scripts/encode.sh --raw WIDTHxHEIGHT OUT.mp4 [--fps N] [--threads N] [--pix-fmt P]
+#   scripts/encode.sh FRAMES_DIR OUT [--movie MOVIE.yaml] [--fps F] [--threads N]
+#       a folder of frame_0000.png, frame_0001.png, ...: frames 0 to n-1,
+#       all with the same zero padding (a gap is refused)
+#   scripts/encode.sh --raw WIDTHxHEIGHT OUT [--movie MOVIE.yaml] [--fps F] [--threads N] [--pix-fmt P]
 #       raw frames on standard input, as `firsthit frames --raw-video -`
 #       writes them while it renders: the encoder then runs beside the
 #       renderer (scripts/make_movie.sh). RGB24 (the default) gives the same
 #       video as encoding the frame files afterwards; yuv420p frames
 #       (`--raw-pix-fmt yuv420p`) skip ffmpeg's own colour conversion.
-#   --threads N: x264's threads (default: ffmpeg's choice, all cores). The
-#       video depends on it: encode with the same N to get the same bytes.
+#
+# The fps, the first of:
+#   --fps F              given explicitly: it always wins
+#   --movie MOVIE.yaml   the movie's fps, from `firsthit info MOVIE` (FIRSTHIT
+#                        names the binary; default: build/firsthit)
+#   FRAMES_DIR/movie.txt the movie's `key: value` lines beside its frames
+#                        (at least `fps: F` and `frames: N`); not read when
+#                        --movie is given
+#   30, with a warning on standard error.
+# When the movie's frame count is known (from --movie, or else movie.txt), a
+# folder must hold exactly its frames: frames past the movie's end (left by
+# an earlier, longer render) are refused, and so are missing last frames
+# (render them with `firsthit frames MOVIE --resume`). Refused means exit 2,
+# one line on standard error, nothing written. (Raw frames on standard input
+# are not counted.) Options may stand before or after the paths.
+#
+#   --threads N: the encoder's threads (default: ffmpeg's choice, all cores).
+#       The video depends on it: encode with the same N to get the same bytes.
 #       `make movies` uses 1 per movie, with both movies at once: less work
 #       in all than x264 sharing two cores with itself.
 set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
 
 die() { echo "encode.sh: error: $*" >&2; exit 2; }
-usage="usage: scripts/encode.sh FRAMES_DIR OUT.mp4 [--fps N] [--threads N]  |  scripts/encode.sh --raw WxH OUT.mp4 [--fps N] [--threads N] [--pix-fmt rgb24|yuv420p]"
+usage="usage: scripts/encode.sh FRAMES_DIR OUT.(mp4|webm|gif|mov) [--movie MOVIE.yaml] [--fps F] [--threads N]  |  scripts/encode.sh --raw WxH OUT.(mp4|webm|gif|mov) [--movie MOVIE.yaml] [--fps F] [--threads N] [--pix-fmt rgb24|yuv420p]"
+supported=".mp4 (H.264), .webm (VP9), .gif, .mov (H.264)"
+# A number > 0, as ffmpeg's -framerate takes it (30, 29.97).
+is_fps() { [[ $1 =~ ^[0-9]+([.][0-9]+)?$ ]] && awk "BEGIN{exit !($1 > 0)}"; }
+# The value of a `key: value` line on standard input (the first), trimmed.
+value_of() {
+  awk -v k="$1" 'index($0, k ":") == 1 { v = substr($0, length(k) + 2); gsub(/^[ \t]+|[ \t\r]+$/, "", v); print v; exit }'
+}
 
-raw_size=
-if [[ ${1:-} == --raw ]]; then
-  [[ $# -ge 2 ]] || die "--raw needs WIDTHxHEIGHT"
-  raw_size=$2
-  shift 2
-  [[ $raw_size =~ ^[1-9][0-9]*x[1-9][0-9]*$ ]] || die "--raw needs WIDTHxHEIGHT (e.g. 800x800), got '$raw_size'"
-  [[ $# -ge 1 ]] || die "$usage"
-  dir= out=$1
-  shift 1
-else
-  [[ $# -ge 2 ]] || die "$usage"
-  dir=$1 out=$2
-  shift 2
-fi
-fps=30
-threads=()
-raw_pix_fmt=rgb24
+raw_size='' fps='' movie='' raw_pix_fmt=''
+threads=() positional=()
 while [[ $# -gt 0 ]]; do
   case $1 in
+    --raw)
+      [[ $# -ge 2 ]] || die "--raw needs WIDTHxHEIGHT"
+      [[ $2 =~ ^[1-9][0-9]*x[1-9][0-9]*$ ]] || die "--raw needs WIDTHxHEIGHT (e.g. 800x800), got '$2'"
+      raw_size=$2; shift 2 ;;
     --fps) [[ $# -ge 2 ]] || die "--fps needs a value"; fps=$2; shift 2 ;;
+    --movie) [[ $# -ge 2 && -n $2 ]] || die "--movie needs a movie file (MOVIE.yaml)"; movie=$2; shift 2 ;;
     --threads)
       [[ $# -ge 2 && $2 =~ ^[1-9][0-9]*$ ]] || die "--threads needs a whole number > 0, got '${2:-}'"
       threads=(-threads "$2"); shift 2 ;;
     --pix-fmt)
-      [[ -n $raw_size ]] || die "--pix-fmt is for --raw frames (frame files are PNG)"
       [[ ${2:-} == rgb24 || ${2:-} == yuv420p ]] || die "--pix-fmt is rgb24 or yuv420p, got '${2:-}'"
       raw_pix_fmt=$2; shift 2 ;;
-    *) die "unknown option '$1'" ;;
+    -h | --help) echo "$usage"; exit 0 ;;
+    -?*) die "unknown option '$1'" ;;
+    *) positional+=("$1"); shift ;;
   esac
 done
-[[ $fps =~ ^[0-9]+([.][0-9]+)?$ ]] && awk "BEGIN{exit !($fps > 0)}" || die "--fps must be a number > 0, got '$fps'"
+if [[ -n $raw_size ]]; then
+  [[ ${#positional[@]} -eq 1 ]] || die "$usage"
+  dir='' out=${positional[0]}
+else
+  [[ ${#positional[@]} -eq 2 ]] || die "$usage"
+  dir=${positional[0]} out=${positional[1]}
+  [[ -z $raw_pix_fmt ]] || die "--pix-fmt is for --raw frames (frame files are PNG)"
+fi
+raw_pix_fmt=${raw_pix_fmt:-rgb24}
+
+# The format, from the extension, before anything else runs.
+name=$(basename -- "$out")
+ext=
+[[ $name == *.* ]] && ext=${name##*.}
+ext=${ext,,}
+case $ext in
+  mp4) label="MP4, H.264" ;;
+  mov) label="QuickTime, H.264" ;;
+  webm) label="WebM, VP9" ;;
+  gif) label="GIF" ;;
+  *) die "cannot write '$out': the output's extension picks the format; supported: $supported" ;;
+esac
+outdir=$(dirname -- "$out")
+[[ -d $outdir ]] || die "cannot write '$out': folder '$outdir' does not exist"
+[[ ! -d $out ]] || die "cannot write '$out': it is a folder"
+[[ -z $fps ]] || is_fps "$fps" || die "--fps must be a number > 0, got '$fps'"
 command -v ffmpeg >/dev/null || die "ffmpeg not found; install it with: apt-get install ffmpeg"
+
+# The movie's fps and frame count: from --movie, or else the frames' movie.txt.
+movie_fps='' count='' count_from=''
+if [[ -n $movie ]]; then
+  firsthit=${FIRSTHIT:-$here/../build/firsthit}
+  command -v "$firsthit" >/dev/null || die "--movie needs firsthit, not found at $firsthit (build it, or set FIRSTHIT)"
+  info=$("$firsthit" info "$movie") || exit 2  # firsthit said why, in one line
+  movie_fps=$(value_of fps <<<"$info") count=$(value_of frames <<<"$info") count_from=$movie
+  [[ -n $movie_fps ]] || die "--movie $movie: not a movie file (a scene has no fps)"
+elif [[ -z $raw_size && -f $dir/movie.txt ]]; then
+  sidecar=$(<"$dir/movie.txt")
+  movie_fps=$(value_of fps <<<"$sidecar") count=$(value_of frames <<<"$sidecar") count_from=$dir/movie.txt
+fi
+if [[ -n $count_from ]]; then
+  is_fps "$movie_fps" || die "$count_from: expected a line 'fps: F' with F a number > 0, got '$movie_fps'"
+  [[ $count =~ ^[1-9][0-9]*$ ]] || die "$count_from: expected a line 'frames: N' with N a whole number > 0, got '$count'"
+fi
+fps_warning=
+if [[ -z $fps ]]; then
+  fps=${movie_fps:-30}
+  [[ -n $movie_fps ]] || fps_warning="no fps given${dir:+ and $dir has no movie.txt}: encoding at 30 fps; pass --movie MOVIE.yaml (the movie's fps) or --fps F"
+fi
 
 if [[ -n $raw_size ]]; then
   input=(-f rawvideo -pix_fmt "$raw_pix_fmt" -s "$raw_size" -framerate "$fps" -i -)
@@ -59,15 +129,34 @@ if [[ -n $raw_size ]]; then
   width=${raw_size%x*} height=${raw_size#*x}
 else
   [[ -d $dir ]] || die "no such folder: $dir"
-  # The frames must be frame_0..frame_{n-1}, all with the same zero padding.
-  mapfile -t frames < <(cd "$dir" && ls -1 | grep -E '^frame_[0-9]+\.png$' | sort)
+  frames=()
+  for f in "$dir"/frame_*.png; do  # in order: the glob sorts
+    f=${f##*/}
+    if [[ $f =~ ^frame_[0-9]+\.png$ ]]; then frames+=("$f"); fi
+  done
   n=${#frames[@]}
   [[ $n -gt 0 ]] || die "$dir holds no frames (frame_0000.png, ...)"
   digits=$(( ${#frames[0]} - 10 ))  # "frame_" + digits + ".png"
+  # No frame past the movie's end: stale frames of an earlier, longer render
+  # would play on after it.
+  if [[ -n $count ]]; then
+    extra='' extra_index=''
+    for f in "${frames[@]}"; do
+      i=$((10#${f:6:${#f}-10}))
+      if ((i >= count)) && [[ -z $extra || $i -lt $extra_index ]]; then extra=$f extra_index=$i; fi
+    done
+    [[ -z $extra ]] || die "$dir holds frames past the movie's end ($count frames, from $count_from): $extra is the first; remove them, or render into a fresh folder"
+  fi
+  # The frames must be frame_0..frame_{n-1}, all with the same zero padding.
   for ((i = 0; i < n; i++)); do
     want=$(printf "frame_%0${digits}d.png" "$i")
     [[ ${frames[$i]} == "$want" ]] || die "$dir has a gap or stray frame: expected $want, found ${frames[$i]} (render the missing frames with 'firsthit frames MOVIE --resume')"
   done
+  if [[ -n $count ]] && ((n < count)); then
+    missing="$(printf "frame_%0${digits}d.png" "$n") is"
+    ((n == count - 1)) || missing="$(printf "frame_%0${digits}d.png" "$n") to $(printf "frame_%0${digits}d.png" $((count - 1))) are"
+    die "$dir holds $n of the movie's $count frames (from $count_from): $missing missing (render the missing frames with 'firsthit frames MOVIE --resume')"
+  fi
   input=(-framerate "$fps" -i "$dir/frame_%0${digits}d.png")
   what="$n frames"
   # The size, from the first frame's IHDR chunk (bytes 16-23, big-endian).
@@ -75,16 +164,33 @@ else
     awk '{print ($1*16777216 + $2*65536 + $3*256 + $4), ($5*16777216 + $6*65536 + $7*256 + $8)}') || true
   [[ ${width:-0} -gt 0 && ${height:-0} -gt 0 ]] || die "$dir/${frames[0]} is not a PNG file"
 fi
-# H.264 in yuv420p needs even sides: pad odd ones by a pixel. (Only then: the
-# filter costs a copy of every frame.)
-pad=()
-(( width % 2 == 0 && height % 2 == 0 )) || pad=(-vf "pad=ceil(iw/2)*2:ceil(ih/2)*2")
 
-tmp="$(dirname "$out")/.$(basename "$out").tmp-$$.mp4"
+filter=() codec=()
+case $ext in
+  mp4 | mov)
+    # H.264 in yuv420p needs even sides: pad odd ones by a pixel. (Only then:
+    # the filter costs a copy of every frame.)
+    (( width % 2 == 0 && height % 2 == 0 )) || filter=(-vf "pad=ceil(iw/2)*2:ceil(ih/2)*2")
+    codec=(-c:v libx264 -preset medium "${threads[@]}" -pix_fmt yuv420p -movflags +faststart) ;;
+  webm)
+    # Constant quality (-b:v 0: no bitrate cap); VP9 takes odd sides as they
+    # are. bitexact: no random segment UID, so the same frames give the same
+    # bytes.
+    codec=(-c:v libvpx-vp9 -crf 32 -b:v 0 -row-mt 1 "${threads[@]}" -pix_fmt yuv420p -fflags +bitexact) ;;
+  gif)
+    # One palette for the whole movie, made from its own frames.
+    filter=(-vf "split[a][b];[a]palettegen[p];[b][p]paletteuse")
+    codec=("${threads[@]}") ;;
+esac
+
+[[ -z $fps_warning ]] || echo "encode.sh: warning: $fps_warning" >&2
+# The muxer is named (-f): the temporary's extension does not pick it.
+tmp="$outdir/.$name.tmp-$$.$ext"
 trap 'rm -f "$tmp"' EXIT
 ffmpeg -hide_banner -loglevel error -nostdin -y "${input[@]}" \
-  "${pad[@]}" -c:v libx264 -preset medium "${threads[@]}" -pix_fmt yuv420p \
-  -movflags +faststart "$tmp"
+  "${filter[@]}" "${codec[@]}" -f "$ext" "$tmp"
+# (ffmpeg may end well having written nothing: a GIF of no frames.)
+[[ -s $tmp ]] || { echo "encode.sh: error: ffmpeg wrote nothing into $out: no frames?" >&2; exit 1; }
 mv -f "$tmp" "$out"
 trap - EXIT
-echo "encoded $what at $fps fps into $out"
+echo "encoded $what at $fps fps into $out ($label)"
