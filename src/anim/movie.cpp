@@ -1,34 +1,170 @@
 #include "anim/movie.h"
 
 #include <cmath>
-#include <stdexcept>
+#include <numbers>
+#include <set>
+#include <sstream>
 
 namespace fh {
+
+namespace {
+
+bool is_light(Property p) { return p >= Property::light_on && p <= Property::light_max_angle; }
+
+// The same property of the same thing (index means nothing for the camera,
+// light only for lights).
+bool same_thing(const Target& a, const Target& b) {
+    if (a.property != b.property) return false;
+    if (is_camera(a.property)) return true;
+    return a.index == b.index && (!is_light(a.property) || a.light == b.light);
+}
+
+const Animation* find(const Movie& movie, const Target& target) {
+    for (const Animation& a : movie.animations)
+        if (same_thing(a.target, target)) return &a;
+    return nullptr;
+}
+
+Target target(Property property, size_t index = 0, LightKind light = LightKind::spot) {
+    Target t;
+    t.property = property;
+    t.index = index;
+    t.light = light;
+    return t;
+}
+
+// A named triangle's or mesh's transform at a frame: the file's, with the
+// animated parts replaced.
+Transform transform_at(const Movie& movie, size_t surface, int frame) {
+    Transform tr = movie.scene.named_surfaces[surface].transform;
+    auto part = [&](Property p) -> std::optional<dvec3> {
+        const Target t = target(p, surface);
+        if (!find(movie, t)) return std::nullopt;
+        return value_at(movie, t, frame);
+    };
+    if (auto v = part(Property::transform_translate)) tr.translate = *v;
+    if (auto v = part(Property::transform_scale)) tr.scale = *v;
+    if (auto v = part(Property::transform_axis)) tr.axis = *v;
+    if (auto v = part(Property::transform_degrees)) tr.radians = v->x * std::numbers::pi / 180;
+    if (auto v = part(Property::transform_radians)) tr.radians = v->x;
+    return tr;
+}
+
+// Where a followed thing is at a frame: a spot light's position, a sphere's
+// centre, a triangle's or mesh's own centre (of its bounding box as read)
+// carried by its transform.
+dvec3 followed(const Movie& movie, const Follow& f, int frame) {
+    if (f.spot_light) return value_at(movie, target(Property::light_position, f.index), frame);
+    const NamedSurface& s = movie.scene.named_surfaces[f.index];
+    if (s.kind == SurfaceKind::sphere) return value_at(movie, target(Property::sphere_center, f.index), frame);
+    dvec3 lo(kInfinity<double>), hi(-kInfinity<double>);
+    for (const dvec3& p : s.mesh->positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const Transform tr = transform_at(movie, f.index, frame);
+    return tr.identity() ? 0.5 * (lo + hi) : dvec3(tr.matrix() * glm::dvec4(0.5 * (lo + hi), 1.0));
+}
+
+// Where a Toward aims from: the camera's eye, a spot light's position.
+dvec3 origin_of(const Movie& movie, const Target& t, int frame) {
+    if (t.property == Property::camera_look_at) return value_at(movie, target(Property::camera_view_point), frame);
+    return value_at(movie, target(Property::light_position, t.index), frame);
+}
+
+std::string shown(const Target& t, const dvec3& v) {
+    std::ostringstream out;
+    out.precision(6);
+    switch (t.kind) {
+    case ValueKind::point: case ValueKind::direction: case ValueKind::color: case ValueKind::scale:
+        out << '[' << v.x << ", " << v.y << ", " << v.z << ']';
+        break;
+    case ValueKind::flag: out << (v.x != 0 ? "true" : "false"); break;
+    default: out << v.x;
+    }
+    return out.str();
+}
+
+}  // namespace
 
 int Movie::frame_count() const {
     return static_cast<int>(std::llround(fps * seconds));
 }
 
-Camera camera_at(const Movie& movie, int frame) {
+void Movie::animate_camera(Property property, Path path) {
+    Target t = target(property);
+    for (const PropertyName& p : camera_properties(Projection::perspective))
+        if (p.property == property) {
+            t.kind = p.kind;
+            t.path = std::string("camera.") + p.name;
+        }
+    for (Animation& a : animations)
+        if (same_thing(a.target, t)) {
+            a.path = std::move(path);
+            return;
+        }
+    animations.push_back({t, std::move(path)});
+}
+
+bool Movie::scene_changes() const {
+    for (const Animation& a : animations)
+        if (!is_camera(a.target.property)) return true;
+    return false;
+}
+
+bool Movie::shapes_move() const {
+    for (const Animation& a : animations)
+        if (moves_shapes(a.target.property)) return true;
+    return false;
+}
+
+dvec3 value_at(const Movie& movie, const Target& t, int frame) {
+    const Animation* a = find(movie, t);
+    if (!a) return value_of(t, movie.scene, movie.camera);
     const int n = movie.frame_count();
+    if (const auto* toward = std::get_if<Toward>(&a->path)) {
+        const dvec3 to = toward->follow ? followed(movie, *toward->follow, frame) : evaluate(toward->point, frame, n);
+        return aim(origin_of(movie, t, frame), to);
+    }
+    return evaluate(a->path, frame, n, dvec3(0));
+}
+
+Camera camera_at(const Movie& movie, int frame) {
     Camera cam = movie.camera;
-    // view_point first: a Toward look_at (or up) aims from this frame's eye.
-    if (movie.view_point) cam.view_point = evaluate(*movie.view_point, frame, n, cam.view_point);
-    if (movie.look_at) cam.look_at = evaluate(*movie.look_at, frame, n, cam.view_point);
-    if (movie.up) cam.up = evaluate(*movie.up, frame, n, cam.view_point);
+    Scene none;  // set_value's scene: camera properties never touch it
+    for (const Animation& a : movie.animations)
+        if (is_camera(a.target.property)) set_value(a.target, value_at(movie, a.target, frame), none, cam);
     return cam;
 }
 
-std::vector<int> check_camera_path(const Movie& movie) {
+void scene_at(const Movie& movie, int frame, Scene& scene) {
+    Camera unused;
+    std::set<size_t> placed;  // surfaces whose transform moves
+    for (const Animation& a : movie.animations) {
+        if (is_camera(a.target.property)) continue;
+        if (is_transform(a.target.property)) placed.insert(a.target.index);
+        else set_value(a.target, value_at(movie, a.target, frame), scene, unused);
+    }
+    for (const size_t s : placed) place_surface(scene, scene.named_surfaces[s], transform_at(movie, s, frame));
+}
+
+std::vector<int> check_animations(const Movie& movie) {
     std::vector<int> parallel;
     const int n = movie.frame_count();
     for (int i = 0; i < n; ++i) {
+        for (const Animation& a : movie.animations) {
+            const dvec3 v = value_at(movie, a.target, i);
+            const std::string why = check_value(a.target, v);
+            if (!why.empty())
+                throw AnimationError(a.target.path + " is " + shown(a.target, v) + " at frame " +
+                                         std::to_string(i) + "; " + why, a.line, a.column);
+        }
         const Camera cam = camera_at(movie, i);
         // Checked before camera_basis, which would turn these into NaN.
         if (!is_finite(cam.look_at))
-            throw std::invalid_argument("view direction is not finite at frame " + std::to_string(i));
+            throw AnimationError("view direction is not finite at frame " + std::to_string(i), 0, 0);
         if (max_abs_component(cam.look_at) == 0)
-            throw std::invalid_argument("view direction is zero-length at frame " + std::to_string(i));
+            throw AnimationError("view direction is zero-length at frame " + std::to_string(i), 0, 0);
         if (camera_basis(cam.look_at, cam.up).up_was_parallel) parallel.push_back(i);
     }
     return parallel;

@@ -4,6 +4,7 @@
 #include <climits>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <unordered_set>
 
 #include "io/scene_loader.h"
@@ -77,9 +78,120 @@ void check_frame_count(const YamlReader& r, const MapReader& m, const Movie& mov
     r.fail(at, "fps * seconds gives more than " + std::to_string(kMaxMovieFrames) + " frames");
 }
 
-// A value of the property: look_at and up are directions and must not be zero.
-dvec3 property_value(const YamlReader& r, const YAML::Node& node, const std::string& property) {
-    return property == "view_point" ? r.vec3(node, property) : r.direction(node, property);
+// 301, 7.5, 0.333333: a number as people write it.
+std::string number_text(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
+
+std::string join(const std::vector<std::string>& words, size_t from, const char* sep = ".") {
+    std::string out;
+    for (size_t i = from; i < words.size(); ++i) out += (i > from ? sep : "") + words[i];
+    return out;
+}
+
+std::vector<std::string> split(const std::string& path) {
+    std::vector<std::string> words(1);
+    for (const char c : path) {
+        if (c == '.') words.emplace_back();
+        else words.back() += c;
+    }
+    return words;
+}
+
+// The property `rest` of a thing (`what`: "light 'spot'"), or one line
+// listing what it can animate.
+Target pick_property(const YamlReader& r, const YAML::Node& at, const std::string& path, const std::string& what,
+                     const std::string& rest, const std::vector<PropertyName>& properties) {
+    std::vector<std::string> names;
+    for (const PropertyName& p : properties) {
+        if (rest == p.name) {
+            Target t;
+            t.property = p.property;
+            t.kind = p.kind;
+            t.path = path;
+            return t;
+        }
+        names.push_back(p.name);
+    }
+    const std::string hint = closest_match(rest, names);
+    r.fail(at, "unknown property '" + rest + "' in '" + path + "': " + what + " can animate " + join(names, 0, ", ") +
+                   (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+}
+
+// The animated property a path in `animate:` names (anim/property.h).
+Target read_target(const YamlReader& r, const YAML::Node& at, const std::string& written, const Movie& movie) {
+    // The old keys mean the camera's.
+    const bool old = written == "view_point" || written == "look_at" || written == "up";
+    const std::string path = old ? "camera." + written : written;
+    const std::vector<std::string> words = split(path);
+    const Scene& scene = movie.scene;
+    if (words[0] == "camera")
+        return pick_property(r, at, path, "the camera", join(words, 1), camera_properties(movie.camera.projection));
+    const std::vector<std::string> kinds = {"camera", "lights", "surfaces", "materials"};
+    if (std::find(kinds.begin(), kinds.end(), words[0]) == kinds.end() || words.size() < 3) {
+        const std::string hint = closest_match(words[0], kinds);
+        r.fail(at, "unknown property path '" + written + "': a path is camera.PROPERTY, lights.NAME.PROPERTY, "
+                   "surfaces.NAME.PROPERTY or materials.NAME.PROPERTY" +
+                   (hint.empty() || hint == words[0] ? "" : " (did you mean '" + hint + "'?)"));
+    }
+    const std::string& name = words[1];
+    const std::string rest = join(words, 2);
+    if (words[0] == "lights") {
+        auto in = [&](const auto& lights, LightKind kind, const char* what) -> std::optional<Target> {
+            for (size_t i = 0; i < lights.size(); ++i) {
+                if (lights[i].name != name) continue;
+                Target t = pick_property(r, at, path, std::string(what) + " '" + name + "'", rest, light_properties(kind));
+                t.light = kind;
+                t.index = i;
+                return t;
+            }
+            return std::nullopt;
+        };
+        if (auto t = in(scene.ambient_lights, LightKind::ambient, "ambient light")) return *t;
+        if (auto t = in(scene.directional_lights, LightKind::directional, "directional light")) return *t;
+        if (auto t = in(scene.spot_lights, LightKind::spot, "spot light")) return *t;
+        fail_undefined(r, at, "light", name, light_names(scene));
+    }
+    if (words[0] == "materials") {
+        const auto& names = scene.material_names;
+        const auto it = std::find(names.begin(), names.end(), name);
+        if (it == names.end()) fail_undefined(r, at, "material", name, names);
+        Target t = pick_property(r, at, path, "material '" + name + "'", rest, material_properties());
+        t.index = size_t(it - names.begin());
+        return t;
+    }
+    std::vector<std::string> names;
+    for (size_t i = 0; i < scene.named_surfaces.size(); ++i) {
+        const NamedSurface& s = scene.named_surfaces[i];
+        names.push_back(s.name);
+        if (s.name != name) continue;
+        const char* kind[] = {"sphere", "plane", "triangle", "mesh"};
+        Target t = pick_property(r, at, path, std::string(kind[int(s.kind)]) + " '" + name + "'", rest,
+                                 surface_properties(s.kind));
+        t.index = i;
+        return t;
+    }
+    const std::string hint = closest_match(name, names);
+    r.fail(at, "no surface named '" + name + "' (a surface gets one with 'name:' in the scene)" +
+                   (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+}
+
+// One value of the target's kind.
+dvec3 read_value(const YamlReader& r, const YAML::Node& node, const Target& t) {
+    switch (t.kind) {
+    case ValueKind::point: return r.vec3(node, t.path);
+    case ValueKind::direction: return r.direction(node, t.path);
+    case ValueKind::color: return r.color(node, t.path);
+    case ValueKind::scale: return node.IsSequence() ? r.vec3(node, t.path) : dvec3(r.number(node, t.path));
+    case ValueKind::flag: return dvec3(r.boolean(node, t.path) ? 1 : 0);
+    default: return dvec3(r.number(node, t.path));
+    }
+}
+
+bool is_vector(const Target& t) {
+    return t.kind == ValueKind::point || t.kind == ValueKind::direction || t.kind == ValueKind::color;
 }
 
 Orbit read_orbit(const YamlReader& r, const YAML::Node& node) {
@@ -87,33 +199,80 @@ Orbit read_orbit(const YamlReader& r, const YAML::Node& node) {
     return {m.vec3("center"), m.vec3("sin"), m.vec3("cos"), m.number_or("turns", 1)};
 }
 
-Keyframes read_keyframes(const YamlReader& r, const MapReader& m, const std::string& property) {
+// Keys at `frame:` or `time:` (seconds: frame = time * fps), in increasing
+// order, inside the movie: 0 <= frame <= frame count (the movie's end).
+Keyframes read_keyframes(const YamlReader& r, const MapReader& m, const Target& t, const Movie& movie) {
     const YAML::Node list = m.value("keyframes");
     r.expect_list(list, "'keyframes'");
     if (list.size() == 0) r.fail(list, "'keyframes' must have at least one key");
     Keyframes k;
-    std::unordered_set<int> frames;  // linear time for many keys
+    const int n = movie.frame_count();
     for (const YAML::Node& item : list) {
-        const MapReader key(r, item, "keyframe", {"frame", "value"});
-        const Keyframe kf{key.integer("frame", 0, INT_MAX), property_value(r, key.value("value"), property)};
-        if (!frames.insert(kf.frame).second)
-            r.fail(key.value("frame"), "duplicate keyframe for frame " + std::to_string(kf.frame));
-        k.keys.push_back(kf);
+        const MapReader key(r, item, "keyframe", {"frame", "time", "value"});
+        if (key.has("frame") == key.has("time"))
+            r.fail(item, "a keyframe needs 'frame' (a frame index) or 'time' (seconds), one of them");
+        const bool timed = key.has("time");
+        const YAML::Node at = key.value(timed ? "time" : "frame");
+        const double frame = timed ? key.number_at_least("time", 0) * movie.fps : key.integer("frame", 0, INT_MAX);
+        if (frame > n + 1e-9 * n)
+            r.fail(at, "keyframe at " + (timed ? "time " + number_text(frame / movie.fps) + " s (frame " : "frame ") +
+                           number_text(frame) + (timed ? ")" : "") + " is past the movie's end (frame " +
+                           std::to_string(n) + ", " + number_text(movie.seconds) + " s)");
+        if (!k.keys.empty() && frame == k.keys.back().frame)
+            r.fail(at, "two keyframes at frame " + number_text(frame));
+        if (!k.keys.empty() && frame < k.keys.back().frame)
+            r.fail(at, "keyframes must be in increasing order: this one is at frame " + number_text(frame) +
+                           ", the one before at frame " + number_text(k.keys.back().frame));
+        k.keys.push_back({frame, read_value(r, key.value("value"), t)});
     }
-    std::sort(k.keys.begin(), k.keys.end(), [](const Keyframe& a, const Keyframe& b) { return a.frame < b.frame; });
+    k.interpolation = t.kind == ValueKind::flag ? Interpolation::step : Interpolation::linear;
     if (m.has("interpolation")) {
-        const int i = r.choice(m.value("interpolation"), "interpolation", {"linear", "catmull_rom"});
-        k.interpolation = i == 0 ? Interpolation::linear : Interpolation::catmull_rom;
+        const std::vector<std::string> names = {"step", "linear", "catmull_rom", "ease_in", "ease_out", "ease_in_out"};
+        const int i = r.choice(m.value("interpolation"), "interpolation", names);
+        if (t.kind == ValueKind::flag && i != 0) r.fail(m.value("interpolation"), "'" + t.path + "' only steps: use interpolation: step");
+        k.interpolation = Interpolation(i);
     }
     return k;
 }
 
-// One animated property: a plain [x, y, z], or a map with exactly one of
-// value, orbit, toward (look_at only) or keyframes (with its interpolation).
-Path read_path(const YamlReader& r, const MapReader::Entry& entry) {
+// A point that moves: fixed, an orbit or keyframes (a Toward's target).
+PointPath read_point_path(const YamlReader& r, const YAML::Node& node, const std::string& where, const Movie& movie) {
+    if (node.IsSequence()) return r.vec3(node, where);
+    const MapReader m(r, node, "'" + where + "'", {"orbit", "keyframes", "interpolation"});
+    if (m.has("orbit") == m.has("keyframes"))
+        r.fail(node, "'" + where + "' takes a point, or one of 'orbit' or 'keyframes'");
+    if (m.has("orbit")) return read_orbit(r, m.value("orbit"));
+    Target point;
+    point.kind = ValueKind::point;
+    point.path = where;
+    return read_keyframes(r, m, point, movie);
+}
+
+// What a Toward aims at: a point, a moving point, or a named thing.
+Toward read_toward(const YamlReader& r, const YAML::Node& node, const Movie& movie) {
+    if (!node.IsScalar()) return {read_point_path(r, node, "toward", movie), std::nullopt};
+    const std::vector<std::string> words = split(node.Scalar());
+    const Scene& scene = movie.scene;
+    if (words.size() == 2 && words[0] == "lights") {
+        for (size_t i = 0; i < scene.spot_lights.size(); ++i)
+            if (scene.spot_lights[i].name == words[1]) return {dvec3(0), Follow{true, i, node.Scalar()}};
+    }
+    if (words.size() == 2 && words[0] == "surfaces") {
+        if (const NamedSurface* s = scene.find_surface(words[1])) {
+            if (s->kind == SurfaceKind::plane) r.fail(node, "'toward' cannot follow a plane: it has no centre");
+            return {dvec3(0), Follow{false, size_t(s - scene.named_surfaces.data()), node.Scalar()}};
+        }
+    }
+    r.fail(node, "'toward' follows 'surfaces.NAME' (a named sphere, triangle or mesh) or 'lights.NAME' "
+                 "(a spot light); no such thing as '" + node.Scalar() + "'");
+}
+
+// One animated property: a plain value, or a map with exactly one of value,
+// orbit, toward or keyframes (with its interpolation).
+Path read_path(const YamlReader& r, const MapReader::Entry& entry, const Target& t, const Movie& movie) {
     const std::string& property = entry.key;
-    if (entry.value.IsSequence()) return property_value(r, entry.value, property);
     if (entry.value.IsNull()) r.fail(entry.key_node, "missing value for '" + property + "'");
+    if (!entry.value.IsMap()) return read_value(r, entry.value, t);
     const MapReader m(r, entry.value, "'" + property + "'", {"value", "orbit", "toward", "keyframes", "interpolation"});
     const MapReader::Entry* kind = nullptr;
     for (const MapReader::Entry& e : m.entries()) {
@@ -124,22 +283,29 @@ Path read_path(const YamlReader& r, const MapReader::Entry& entry) {
     if (!kind) r.fail(m.node(), "'" + property + "' needs one of 'value', 'orbit', 'toward' or 'keyframes'");
     if (const MapReader::Entry* interp = m.find("interpolation"); interp && kind->key != "keyframes")
         r.fail(interp->key_node, "'interpolation' only applies to 'keyframes'");
-    if (kind->key == "value") return property_value(r, m.value("value"), property);
-    if (kind->key == "orbit") return read_orbit(r, m.value("orbit"));
-    if (kind->key == "keyframes") return read_keyframes(r, m, property);
-    // Toward aims from the view point: meaningless for the view point itself or up.
-    if (property != "look_at") r.fail(kind->key_node, "'toward' is only allowed for 'look_at'");
-    return Toward{m.vec3("toward")};
+    if (kind->key == "value") return read_value(r, m.value("value"), t);
+    if (kind->key == "keyframes") return read_keyframes(r, m, t, movie);
+    if (kind->key == "orbit") {
+        if (!is_vector(t)) r.fail(kind->key_node, "'orbit' moves a vector; '" + t.path + "' is not one");
+        return read_orbit(r, m.value("orbit"));
+    }
+    // Toward aims from a place: the camera's eye, a spot light's position.
+    const bool spot_direction = t.property == Property::light_direction && t.light == LightKind::spot;
+    if (t.property != Property::camera_look_at && !spot_direction)
+        r.fail(kind->key_node, "'toward' is only allowed for 'camera.look_at' and a spot light's 'direction'");
+    return read_toward(r, m.value("toward"), movie);
 }
 
 void read_animate(const YamlReader& r, const YAML::Node& node, Movie& movie) {
     if (node.IsNull()) return;
-    const MapReader m(r, node, "'animate'", {"view_point", "look_at", "up"});
+    const MapReader m(r, node, "'animate'", {});
     for (const MapReader::Entry& e : m.entries()) {
-        Path path = read_path(r, e);
-        if (e.key == "view_point") movie.view_point = std::move(path);
-        else if (e.key == "look_at") movie.look_at = std::move(path);
-        else movie.up = std::move(path);
+        const Target t = read_target(r, e.key_node, e.key, movie);
+        for (const Animation& a : movie.animations)
+            if (a.target.path == t.path)
+                r.fail(e.key_node, "'" + t.path + "' is animated twice");
+        const YAML::Mark mark = e.key_node.Mark();
+        movie.animations.push_back({t, read_path(r, e, t, movie), mark.line + 1, mark.column + 1});
     }
 }
 
@@ -157,7 +323,8 @@ Movie load_movie_text(const std::string* text, const std::string& path) {
     try {
         const YamlReader r(path);
         const MapReader m(r, text ? r.parse_map(*text, "movie") : r.load_map("movie"), "movie",
-                          {"scene", "camera", "lights", "fps", "seconds", "animate", "render", "effects"});
+                          {"scene", "camera", "lights", "fps", "seconds", "width", "height", "animate", "render",
+                           "effects"});
         Movie movie;
         SceneFile scene_file = load_scene(scene_path(r, m));
         movie.scene = std::move(scene_file.scene);
@@ -167,6 +334,9 @@ Movie load_movie_text(const std::string* text, const std::string& path) {
         if (m.has("fps")) movie.fps = m.positive("fps");
         if (m.has("seconds")) movie.seconds = m.positive("seconds");
         check_frame_count(r, m, movie);
+        // A preview or a 4K version without a copy of the scene.
+        if (m.has("width")) movie.camera.width = m.integer("width", 1, Limits::max_image_side);
+        if (m.has("height")) movie.camera.height = m.integer("height", 1, Limits::max_image_side);
         read_animate(r, block(m, "animate"), movie);
         read_render_settings(r, block(m, "render"), movie.settings);
         if (m.has("effects")) movie.settings.effects = read_effects(r, m.value("effects"));

@@ -52,16 +52,28 @@ FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, 
         std::_Exit(128 + sig);
     });
     ThreadPool pool(request.threads);
-    // The geometry and its BVH are the same for every frame: built once.
+    // The geometry and its BVH, built once. A frame whose lights or
+    // materials change re-flattens those only; one whose shapes move
+    // refits a copy (PreparedScene::for_frame).
     const PreparedScene prepared(movie.scene, settings, &pool);
     summary.prepare_ms = prepared.build_ms();
+    const bool scene_changes = movie.scene_changes(), shapes_move = movie.shapes_move();
+    // Each worker's own copy of the scene, set to its frame's values.
+    std::vector<std::optional<Scene>> worker_scenes(size_t(pool.size()));
     std::mutex counts_mutex;
-    pool.parallel_for(summary.to_render, [&](int task, int) {
+    pool.parallel_for(summary.to_render, [&](int task, int worker) {
         if (interrupted()) return;
         const int i = frames[size_t(task)];
         FrameResult r;
         try {
-            r = prepared.render(camera_at(movie, i), nullptr);
+            if (scene_changes) {
+                std::optional<Scene>& scene = worker_scenes[size_t(worker)];
+                if (!scene) scene = movie.scene;
+                scene_at(movie, i, *scene);
+                r = prepared.for_frame(*scene, shapes_move).render(camera_at(movie, i), nullptr);
+            } else {
+                r = prepared.render(camera_at(movie, i), nullptr);
+            }
             {
                 std::shared_lock lock(write_mutex);
                 write_png((out / frame_file_name(i, n)).string(), r.image);

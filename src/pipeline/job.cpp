@@ -31,9 +31,9 @@ int camera_index(const Scene& scene, const std::string& name, const std::string&
 std::vector<std::string> check_movie_cameras(const std::string& file, const Movie& movie) {
     std::vector<int> parallel;
     try {
-        parallel = check_camera_path(movie);
-    } catch (const std::invalid_argument& e) {
-        throw InputError(file, e.what());
+        parallel = check_animations(movie);
+    } catch (const AnimationError& e) {
+        throw InputError(file, e.line, e.column, e.what());
     }
     if (parallel.empty()) return {};
     return {file + ": warning: view direction parallel to 'up' at frame(s) " + frame_list(parallel) +
@@ -52,6 +52,10 @@ Job load_job(const JobRequest& request) {
         job.frame = request.frame ? parse_int(*request.frame, "--frame", 0, job.movie.frame_count() - 1) : 0;
         if (request.check_cameras) job.warnings = check_movie_cameras(job.file, job.movie);
         job.camera = camera_at(job.movie, job.frame);
+        if (job.movie.scene_changes()) {
+            job.frame_scene = job.movie.scene;
+            scene_at(job.movie, job.frame, *job.frame_scene);
+        }
         return job;
     }
     if (request.frame) throw UsageError("--frame applies to movie files; " + job.file + " is a scene");

@@ -33,8 +33,10 @@ struct Job {
     int camera_index = 0;  // scene files: the picked camera in movie.scene.cameras
     Camera camera;         // the picked camera: the scene's, or the movie's at `frame`
     std::vector<std::string> warnings;  // one line each, for the command to print
+    // A movie that animates more than its camera: the scene at `frame`.
+    std::optional<Scene> frame_scene;
 
-    const Scene& scene() const { return movie.scene; }
+    const Scene& scene() const { return frame_scene ? *frame_scene : movie.scene; }
     const RenderSettings& settings() const { return movie.settings; }
 };
 
@@ -43,9 +45,11 @@ struct Job {
 // an unknown camera, a frame out of range) throws UsageError.
 Job load_job(const JobRequest& request);
 
-// A movie's camera path checked at every frame: a zero or non-finite view
-// direction throws InputError naming the file and frame; frames where the
-// view is parallel to 'up' (the fallback up is used) give one warning line.
+// A movie's paths checked at every frame (check_animations): a value its
+// property does not allow, a zero or non-finite view direction, throws
+// InputError naming the file, the path's line and the frame; frames where
+// the view is parallel to 'up' (the fallback up is used) give one warning
+// line.
 std::vector<std::string> check_movie_cameras(const std::string& file, const Movie& movie);
 
 }  // namespace fh

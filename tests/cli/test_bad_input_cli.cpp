@@ -193,7 +193,7 @@ TEST(BadInputCli, MovieFileMistakes) {
          frames("bad.yaml"), "DIR/bad_scene.yaml:4:47: error: 'radius' must be > 0, got 0"},
         {"zero_view_direction",
          {{"bad.yaml", "scene: scene.yaml\nanimate:\n  view_point: [0, 0, 0]\n  look_at: {toward: [0, 0, 0]}\n"}},
-         frames("bad.yaml"), "DIR/bad.yaml: error: view direction is zero-length at frame 0"},
+         frames("bad.yaml"), "DIR/bad.yaml:4:3: error: camera.look_at is [0, 0, 0] at frame 0; a direction must not be zero"},
     };
     for (const Case& c : cases) check(c);
 }

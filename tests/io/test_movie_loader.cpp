@@ -48,6 +48,13 @@ std::string movie_error(const std::string& yaml) {
     return "(no error)";
 }
 
+// The path animating `property` ("camera.view_point"), or nullptr.
+const Path* path_of(const Movie& m, const std::string& property) {
+    for (const Animation& a : m.animations)
+        if (a.target.path == property) return &a.path;
+    return nullptr;
+}
+
 TEST(MovieLoader, LoadsTheReportMovies) {
     const std::string dir = std::string(FIRSTHIT_SOURCE_DIR) + "/animations/";
     const Movie m1 = load_movie(dir + "movie1.yaml");
@@ -61,21 +68,21 @@ TEST(MovieLoader, LoadsTheReportMovies) {
     EXPECT_TRUE(m1.scene.ambient_lights[0].on);
     EXPECT_FALSE(m1.scene.directional_lights[0].on);
     EXPECT_TRUE(m1.scene.spot_lights[0].on);
-    ASSERT_TRUE(m1.view_point && std::holds_alternative<Orbit>(*m1.view_point));
-    const Orbit& orbit = std::get<Orbit>(*m1.view_point);
+    ASSERT_TRUE(path_of(m1, "camera.view_point") && std::holds_alternative<Orbit>(*path_of(m1, "camera.view_point")));
+    const Orbit& orbit = std::get<Orbit>(*path_of(m1, "camera.view_point"));
     EXPECT_EQ(orbit.center, dvec3(-10, -10, 16));
     EXPECT_EQ(orbit.sin, dvec3(20, 0, 0));
     EXPECT_EQ(orbit.cos, dvec3(0, 0, 15));
     EXPECT_DOUBLE_EQ(orbit.turns, 1);
-    ASSERT_TRUE(m1.look_at && std::holds_alternative<Toward>(*m1.look_at));
-    EXPECT_EQ(std::get<Toward>(*m1.look_at).point, dvec3(0));
-    EXPECT_FALSE(m1.up);
+    ASSERT_TRUE(path_of(m1, "camera.look_at") && std::holds_alternative<Toward>(*path_of(m1, "camera.look_at")));
+    EXPECT_EQ(std::get<dvec3>(std::get<Toward>(*path_of(m1, "camera.look_at")).point), dvec3(0));
+    EXPECT_FALSE(path_of(m1, "camera.up"));
 
     const Movie m2 = load_movie(dir + "movie2.yaml");
     EXPECT_EQ(m2.camera.name, "orthographic");
     EXPECT_TRUE(m2.scene.directional_lights[0].on);
     EXPECT_FALSE(m2.scene.spot_lights[0].on);
-    EXPECT_EQ(std::get<Orbit>(*m2.view_point).center, dvec3(-10, -40, 26));
+    EXPECT_EQ(std::get<Orbit>(*path_of(m2, "camera.view_point")).center, dvec3(-10, -40, 26));
 }
 
 TEST(MovieLoader, IsMovieFile) {
@@ -102,9 +109,9 @@ TEST(MovieLoader, DefaultsOverridesAndFixedValues) {
     EXPECT_EQ(m.settings.samples_per_pixel, 8);
     EXPECT_EQ(m.settings.max_depth, 3);  // the scene's, not overridden
     EXPECT_EQ(m.settings.effects.names(), "ambient");
-    EXPECT_EQ(std::get<dvec3>(*m.view_point), dvec3(1, 2, 3));
-    EXPECT_EQ(std::get<dvec3>(*m.up), dvec3(0, 0, 1));
-    EXPECT_FALSE(m.look_at);
+    EXPECT_EQ(std::get<dvec3>(*path_of(m, "camera.view_point")), dvec3(1, 2, 3));
+    EXPECT_EQ(std::get<dvec3>(*path_of(m, "camera.up")), dvec3(0, 0, 1));
+    EXPECT_FALSE(path_of(m, "camera.look_at"));
 }
 
 TEST(MovieLoader, CameraDefaultsToTheFirst) {
@@ -116,19 +123,19 @@ TEST(MovieLoader, CameraDefaultsToTheFirst) {
     for (const auto& l : m.scene.spot_lights) EXPECT_FALSE(l.on);
 }
 
-TEST(MovieLoader, KeyframesSortedWithInterpolation) {
+TEST(MovieLoader, KeyframesInOrderWithInterpolation) {
     const Movie m = load_movie(movie_path(
         "scene: scene.yaml\n"
         "animate:\n"
         "  look_at:\n"
-        "    keyframes: [{frame: 30, value: [1, 0, 0]}, {frame: 0, value: [0, 1, 0]}]\n"
+        "    keyframes: [{frame: 0, value: [0, 1, 0]}, {time: 1, value: [1, 0, 0]}]\n"
         "    interpolation: catmull_rom\n"));
-    ASSERT_TRUE(m.look_at && std::holds_alternative<Keyframes>(*m.look_at));
-    const Keyframes& k = std::get<Keyframes>(*m.look_at);
+    ASSERT_TRUE(path_of(m, "camera.look_at") && std::holds_alternative<Keyframes>(*path_of(m, "camera.look_at")));
+    const Keyframes& k = std::get<Keyframes>(*path_of(m, "camera.look_at"));
     ASSERT_EQ(k.keys.size(), 2u);
     EXPECT_EQ(k.keys[0].frame, 0);
     EXPECT_EQ(k.keys[0].value, dvec3(0, 1, 0));
-    EXPECT_EQ(k.keys[1].frame, 30);
+    EXPECT_EQ(k.keys[1].frame, 30);  // 1 s at the default 30 fps
     EXPECT_EQ(k.interpolation, Interpolation::catmull_rom);
 }
 
@@ -182,10 +189,10 @@ TEST(MovieLoader, FromStringResolvesTheSceneNextToThePath) {
 }
 
 TEST(MovieLoader, ManyKeyframesAreCheckedInLinearTime) {
-    std::string yaml = "scene: scene.yaml\nanimate:\n  view_point:\n    keyframes:\n";
+    std::string yaml = "scene: scene.yaml\nseconds: 1000\nanimate:\n  view_point:\n    keyframes:\n";
     for (int i = 0; i < 20000; ++i) yaml += "      - {frame: " + std::to_string(i) + ", value: [0, 0, 1]}\n";
     yaml += "      - {frame: 19999, value: [0, 0, 1]}\n";
-    EXPECT_EQ(movie_error(yaml), "FILE:20005:17: error: duplicate keyframe for frame 19999");
+    EXPECT_EQ(movie_error(yaml), "FILE:20006:17: error: two keyframes at frame 19999");
 }
 
 TEST(MovieLoader, ErrorInTheSceneIsReportedAgainstTheScene) {
@@ -225,7 +232,7 @@ TEST(MovieLoader, TowardOnlyForLookAt) {
     EXPECT_EQ(movie_error("scene: scene.yaml\n"
                           "animate:\n"
                           "  view_point: {toward: [0, 0, 0]}\n"),
-              "FILE:3:16: error: 'toward' is only allowed for 'look_at'");
+              "FILE:3:16: error: 'toward' is only allowed for 'camera.look_at' and a spot light's 'direction'");
 }
 
 TEST(MovieLoader, OnePathKindPerProperty) {
@@ -250,14 +257,14 @@ TEST(MovieLoader, DuplicateKeyframes) {
                           "    keyframes:\n"
                           "      - {frame: 10, value: [0, 0, 0]}\n"
                           "      - {frame: 10, value: [1, 0, 0]}\n"),
-              "FILE:6:17: error: duplicate keyframe for frame 10");
+              "FILE:6:17: error: two keyframes at frame 10");
 }
 
 TEST(MovieLoader, ZeroLookAtValue) {
     EXPECT_EQ(movie_error("scene: scene.yaml\n"
                           "animate:\n"
                           "  look_at: [0, 0, 0]\n"),
-              "FILE:3:12: error: 'look_at' must not be zero-length");
+              "FILE:3:12: error: 'camera.look_at' must not be zero-length");
 }
 
 TEST(MovieLoader, UnknownMovieKey) {
