@@ -131,6 +131,7 @@ int run_frames(const Words& words) {
 
     FramesRequest request;
     request.frames = selected_frames(args, job.movie.frame_count());
+    print_warnings(job);  // the scene's
     for (const std::string& warning : check_movie_cameras(file, job.movie)) std::cerr << warning << "\n";
     RenderSettings settings = job.movie.settings;
     apply_quality_flags(args, settings);

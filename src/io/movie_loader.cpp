@@ -329,6 +329,7 @@ Movie load_movie_text(const std::string* text, const std::string& path) {
         SceneFile scene_file = load_scene(scene_path(r, m));
         movie.scene = std::move(scene_file.scene);
         movie.settings = scene_file.settings;
+        movie.warnings = std::move(scene_file.warnings);
         movie.camera = pick_camera(r, m, movie.scene);
         if (m.has("lights")) keep_only_lights(movie.scene, read_light_list(r, m.value("lights"), movie.scene));
         if (m.has("fps")) movie.fps = m.positive("fps");

@@ -1,6 +1,8 @@
 #include "io/scene_loader.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -287,6 +289,47 @@ Effects read_effects(const YamlReader& r, const YAML::Node& node) {
 
 namespace {
 
+std::string short_number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+}
+
+// Values that are legal but almost surely a mistake of units.
+std::vector<std::string> unit_warnings(const Scene& scene, const std::string& file) {
+    std::vector<std::string> out;
+    const std::string at = file + ": warning: ";
+    double brightest = 0;
+    size_t colours = 0;
+    auto see = [&](const dvec3& c) {
+        brightest = std::max(brightest, max_abs_component(c));
+        ++colours;
+    };
+    for (const auto& m : scene.materials) {
+        see(m.ambient_color);
+        see(m.diffuse_color);
+        see(m.specular_color);
+    }
+    for (const auto& l : scene.ambient_lights) see(l.color);
+    for (const auto& l : scene.directional_lights) see(l.color);
+    for (const auto& l : scene.spot_lights) see(l.color);
+    if (colours > 0 && brightest > 0 && brightest <= 1)
+        out.push_back(at + "every colour is at most 1: 0-1 colours? firsthit's colours are 0-255, so the image "
+                           "comes out nearly black");
+    for (const auto& l : scene.spot_lights)
+        if (l.max_angle > kTwoPi)
+            out.push_back(at + "spot light '" + l.name + "': max_angle " + short_number(l.max_angle) +
+                          " is over 2 pi: degrees? max_angle is in radians");
+    for (const Camera& c : scene.cameras) {
+        if (c.projection != Projection::perspective) continue;
+        const double fov = 2 * std::atan(10 / c.projection_distance) * 180 / 3.14159265358979323846;
+        if (fov < 1 || fov > 170)
+            out.push_back(at + "camera '" + c.name + "': projection_distance " + short_number(c.projection_distance) +
+                          " gives a field of view of " + short_number(fov) + " degrees (10 gives 90)");
+    }
+    return out;
+}
+
 // The scene in `text` (read from the file when it is null).
 SceneFile load_scene_text(const std::string* text, const std::string& path) {
     try {
@@ -303,6 +346,7 @@ SceneFile load_scene_text(const std::string* text, const std::string& path) {
         read_cameras(r, top, scene);
         read_render_settings(r, block(top, "render"), file.settings);
         if (top.has("effects")) file.settings.effects = read_effects(r, top.value("effects"));
+        file.warnings = unit_warnings(scene, path);
         return file;
     } catch (const YAML::Exception& e) {
         throw to_input_error(path, e);

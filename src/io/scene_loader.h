@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "render/settings.h"
 #include "scene/scene.h"
@@ -20,6 +21,10 @@ class YamlReader;
 // A scene file: the scene it describes and the render settings it asks for
 // (its `render:` and `effects:` blocks).
 struct SceneFile {
+    // Likely unit mistakes, one line each ("FILE: warning: ..."): the render
+    // goes on (0-1 colours, max_angle in degrees, a field of view under 1
+    // or over 170 degrees).
+    std::vector<std::string> warnings;
     Scene scene;
     RenderSettings settings;
 };

@@ -50,7 +50,9 @@ Job load_job(const JobRequest& request) {
                              request.movie_camera_note + ")");
         job.movie = load_movie(job.file);
         job.frame = request.frame ? parse_int(*request.frame, "--frame", 0, job.movie.frame_count() - 1) : 0;
-        if (request.check_cameras) job.warnings = check_movie_cameras(job.file, job.movie);
+        job.warnings = job.movie.warnings;
+        if (request.check_cameras)
+            for (std::string& w : check_movie_cameras(job.file, job.movie)) job.warnings.push_back(std::move(w));
         job.camera = camera_at(job.movie, job.frame);
         if (job.movie.scene_changes()) {
             job.frame_scene = job.movie.scene;
@@ -62,6 +64,7 @@ Job load_job(const JobRequest& request) {
     SceneFile scene_file = load_scene(job.file);
     job.movie.scene = std::move(scene_file.scene);
     job.movie.settings = scene_file.settings;
+    job.warnings = std::move(scene_file.warnings);
     if (request.camera) job.camera_index = camera_index(job.movie.scene, *request.camera, job.file);
     job.camera = job.movie.scene.cameras[size_t(job.camera_index)];
     job.movie.camera = job.camera;

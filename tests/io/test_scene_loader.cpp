@@ -428,3 +428,31 @@ TEST(SceneLoader, TriangleNeedsThreeVertices) {
 
 }  // namespace
 }  // namespace fh
+
+namespace fh {
+namespace {
+
+TEST(SceneLoaderWarnings, LikelyUnitMistakesWarnAndTheReportSceneDoesNot) {
+    const std::string text =
+        "materials:\n  m: {color: [1, 0.5, 0.5], ambient: 0.1, diffuse: 0.5, specular: 0, phong_exponent: 1}\n"
+        "lights:\n  s: {type: spot, color: [1, 1, 1], intensity: 1, position: [0, 0, 5], direction: [0, 0, -1],"
+        " max_angle: 45}\n"
+        "cameras:\n  c: {type: perspective, width: 8, height: 8, view_point: [0, -5, 0], look_at: [0, 1, 0],"
+        " up: [0, 0, 1], projection_distance: 2000}\n"
+        "  w: {type: perspective, width: 8, height: 8, view_point: [0, -5, 0], look_at: [0, 1, 0],"
+        " up: [0, 0, 1], projection_distance: 0.5}\n";
+    const SceneFile f = load_scene_from_string(text, "s.yaml");
+    ASSERT_EQ(f.warnings.size(), 4u);
+    EXPECT_EQ(f.warnings[0], "s.yaml: warning: every colour is at most 1: 0-1 colours? firsthit's colours are 0-255, "
+                             "so the image comes out nearly black");
+    EXPECT_EQ(f.warnings[1], "s.yaml: warning: spot light 's': max_angle 45 is over 2 pi: degrees? max_angle is in radians");
+    // 2 atan(10 / 2000) = 0.573 degrees; 2 atan(10 / 0.5) = 2 atan(20) = 174.3 degrees.
+    EXPECT_EQ(f.warnings[2], "s.yaml: warning: camera 'c': projection_distance 2000 gives a field of view of 0.573 "
+                             "degrees (10 gives 90)");
+    EXPECT_EQ(f.warnings[3], "s.yaml: warning: camera 'w': projection_distance 0.5 gives a field of view of 174.3 "
+                             "degrees (10 gives 90)");
+    EXPECT_TRUE(load_scene(std::string(FIRSTHIT_SOURCE_DIR) + "/animations/scene.yaml").warnings.empty());
+}
+
+}  // namespace
+}  // namespace fh
