@@ -1,6 +1,6 @@
 // Cameras (report 5). The report's look_at is a direction, not a point:
 //     w = normalize(-look_at), u = normalize(up x w), v = w x u.
-// The image plane is 10 units tall: half_height = 10, half_width = 10 * width / height,
+// The image plane is 20 units tall: half_height = 10, half_width = 10 * width / height,
 // and pixel (i, j) (column i, row j from the top) sits at
 //     x = -half_width + (2 half_width / width)(i + 1/2),  y = half_height - (2 half_height / height)(j + 1/2).
 // Orthographic: origin = view_point + x u + y v, direction = -w.
