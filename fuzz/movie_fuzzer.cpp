@@ -69,16 +69,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     const int n = movie.frame_count();
     if (n < 1) std::abort();  // the loader guarantees at least one frame
-    // The camera paths at a few frames (all of them for short movies), and
-    // the first frame rendered tiny when its camera is usable.
+    // The paths at a few frames (all of them, checked, for short movies),
+    // and the first frame rendered tiny when its values passed the checks.
     try {
-        if (n <= 64) fh::check_camera_path(movie);
+        if (n <= 64) fh::check_animations(movie);
     } catch (const std::invalid_argument&) {
         return 0;  // reported by the CLI as bad input
     }
     for (const int frame : {0, n / 3, n / 2, n - 1}) (void)fh::camera_at(movie, frame);
     const fh::Camera cam = fh::camera_at(movie, 0);
-    if (fh::is_finite(cam.look_at) && fh::max_abs_component(cam.look_at) > 0)
-        fh::fuzz::render_tiny(movie.scene, cam, movie.settings);
+    fh::Scene scene = movie.scene;
+    fh::scene_at(movie, 0, scene);  // every animated property at frame 0
+    if (n <= 64 && fh::is_finite(cam.look_at) && fh::max_abs_component(cam.look_at) > 0)
+        fh::fuzz::render_tiny(scene, cam, movie.settings);
     return 0;
 }
