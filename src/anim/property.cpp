@@ -6,11 +6,6 @@ namespace fh {
 
 namespace {
 
-dvec3 unit(const dvec3& v) {
-    const dvec3 scaled = v / max_abs_component(v);
-    return scaled / glm::length(scaled);
-}
-
 template <typename Light>
 auto& light(const Target& t, std::vector<Light>& lights) { return lights[t.index]; }
 
@@ -127,13 +122,13 @@ void set_value(const Target& t, const dvec3& v, Scene& scene, Camera& camera) {
     case Property::light_color: on_light([&](auto& l) { l.color = v; }); break;
     case Property::light_position: scene.spot_lights[t.index].position = v; break;
     case Property::light_direction:
-        if (t.light == LightKind::directional) scene.directional_lights[t.index].direction = unit(v);
-        else scene.spot_lights[t.index].axis = unit(v);
+        if (t.light == LightKind::directional) scene.directional_lights[t.index].direction = unit_or_zero(v);
+        else scene.spot_lights[t.index].axis = unit_or_zero(v);
         break;
     case Property::light_max_angle: scene.spot_lights[t.index].max_angle = v.x; break;
     case Property::sphere_center: scene.spheres[s->index].center = v; break;
     case Property::sphere_radius: scene.spheres[s->index].radius = v.x; break;
-    case Property::plane_normal: scene.planes[s->index].normal = unit(v); break;
+    case Property::plane_normal: scene.planes[s->index].normal = unit_or_zero(v); break;
     case Property::plane_distance: scene.planes[s->index].distance = v.x; break;
     case Property::material_color: m->ambient_color = m->diffuse_color = m->specular_color = v; break;
     case Property::material_ambient_color: m->ambient_color = v; break;

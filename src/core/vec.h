@@ -38,4 +38,14 @@ inline T max_abs_component(const Vec3<T>& v) {
     return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
 }
 
+// v / |v|, scaled first so that huge or tiny components neither overflow
+// nor underflow in the length; the zero vector for a zero or non-finite v.
+template <typename T>
+inline Vec3<T> unit_or_zero(const Vec3<T>& v) {
+    const T m = max_abs_component(v);
+    if (!(m > 0) || !std::isfinite(m)) return Vec3<T>(0);
+    const Vec3<T> scaled = v / m;
+    return scaled / glm::length(scaled);
+}
+
 }  // namespace fh

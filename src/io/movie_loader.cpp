@@ -304,10 +304,9 @@ void read_animate(const YamlReader& r, const YAML::Node& node, Movie& movie) {
         for (const Animation& a : movie.animations)
             if (a.target.path == t.path)
                 r.fail(e.key_node, "'" + t.path + "' is animated twice");
+        auto is_angle = [](Property p) { return p == Property::transform_degrees || p == Property::transform_radians; };
         for (const Animation& a : movie.animations)
-            if (a.target.index == t.index && is_transform(t.property) &&
-                std::min(a.target.property, t.property) == Property::transform_degrees &&
-                std::max(a.target.property, t.property) == Property::transform_radians)
+            if (is_angle(t.property) && is_angle(a.target.property) && a.target.index == t.index)
                 r.fail(e.key_node, "'" + t.path + "': animate the angle in degrees or in radians, not both");
         const YAML::Mark mark = e.key_node.Mark();
         movie.animations.push_back({t, read_path(r, e, t, movie), mark.line + 1, mark.column + 1});

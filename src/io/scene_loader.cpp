@@ -18,12 +18,6 @@ using Keys = std::vector<std::string>;
 
 constexpr double kTwoPi = 6.283185307179586;
 
-// v / |v| without overflow for huge components (v is known non-zero).
-dvec3 unit(const dvec3& v) {
-    const dvec3 scaled = v / max_abs_component(v);
-    return scaled / glm::length(scaled);
-}
-
 // An optional block: absent or empty (null) gives a null node.
 YAML::Node block(const MapReader& map, const std::string& key) {
     const MapReader::Entry* e = map.find(key);
@@ -193,7 +187,7 @@ void read_surface(const YamlReader& r, const YAML::Node& node, Scene& scene) {
         const double scale = max_abs_component(normal);
         const double length = glm::length(normal / scale);
         named.index = scene.planes.size();
-        scene.planes.push_back({unit(normal), distance / scale / length, material_index(m, scene)});
+        scene.planes.push_back({unit_or_zero(normal), distance / scale / length, material_index(m, scene)});
     }
     if (!named.name.empty()) scene.named_surfaces.push_back(std::move(named));
 }
@@ -216,7 +210,7 @@ void read_light(const YamlReader& r, const MapReader::Entry& entry, Scene& scene
         const MapReader m(r, entry.value, "directional light '" + entry.key + "'",
                           {"type", "color", "intensity", "direction"});
         scene.directional_lights.push_back(
-            {entry.key, m.color("color"), m.number_at_least("intensity", 0), unit(m.direction("direction"))});
+            {entry.key, m.color("color"), m.number_at_least("intensity", 0), unit_or_zero(m.direction("direction"))});
     } else {
         const MapReader m(r, entry.value, "spot light '" + entry.key + "'",
                           {"type", "color", "intensity", "position", "direction", "max_angle"});
@@ -225,7 +219,7 @@ void read_light(const YamlReader& r, const MapReader::Entry& entry, Scene& scene
         spot.color = m.color("color");
         spot.intensity = m.number_at_least("intensity", 0);
         spot.position = m.vec3("position");
-        spot.axis = unit(m.direction("direction"));
+        spot.axis = unit_or_zero(m.direction("direction"));
         spot.max_angle = m.has("max_angle") ? m.positive("max_angle") : kTwoPi;
         scene.spot_lights.push_back(spot);
     }

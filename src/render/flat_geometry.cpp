@@ -131,9 +131,7 @@ SmoothTriangle<T> SmoothTriangle<T>::make(const Triangle<double>& t, const std::
     // faces against its normals); one nearly in the face's plane would let
     // the mix vanish, so it gives way to the face normal.
     auto oriented = [&](const dvec3& n) {
-        const double scale = max_abs_component(n);
-        if (!(scale > 0) || !std::isfinite(scale)) return t.normal;
-        const dvec3 u = glm::normalize(n / scale);
+        const dvec3 u = unit_or_zero(n);
         const double along = glm::dot(u, t.normal);
         if (std::abs(along) < 1e-3) return t.normal;
         return along < 0 ? -u : u;
@@ -168,14 +166,17 @@ FlatGeometry<T> FlatGeometry<T>::build(const Scene& scene, ThreadPool* pool) {
 
 template <typename T>
 FlatGeometry<T> FlatGeometry<T>::refit(const Scene& moved, ThreadPool* pool) const {
+    // The same primitives kept: as many triangles with area, and every one
+    // this tree holds among them.
     size_t kept = 0;
-    for (const std::int32_t i : triangle_source) {
-        if (size_t(i) >= moved.triangles.size() || moved.triangles[size_t(i)].degenerate()) return build(moved, pool);
-    }
     for (const auto& t : moved.triangles) kept += !t.degenerate();
-    if (moved.spheres.size() != spheres.size() || moved.planes.size() != planes.size() ||
-        kept != triangles.size())
-        return build(moved, pool);
+    bool same = moved.spheres.size() == spheres.size() && moved.planes.size() == planes.size() &&
+                kept == triangles.size();
+    for (size_t k = 0; same && k < triangle_source.size(); ++k) {
+        const size_t i = size_t(triangle_source[k]);
+        same = i < moved.triangles.size() && !moved.triangles[i].degenerate();
+    }
+    if (!same) return build(moved, pool);
     FlatGeometry<T> g;
     g.triangle_source = triangle_source;
     flatten(moved, g);

@@ -11,16 +11,6 @@ glm::dmat4 Transform::matrix() const {
     return glm::scale(t, scale);
 }
 
-namespace {
-
-dvec3 unit_or_zero(const dvec3& v) {
-    const double m = max_abs_component(v);
-    if (!(m > 0) || !std::isfinite(m)) return dvec3(0);
-    return glm::normalize(v / m);
-}
-
-}  // namespace
-
 PlacedMesh place(const Mesh& mesh, const Transform& transform) {
     const glm::dmat4 m = transform.matrix();
     std::vector<dvec3> p(mesh.positions.size());

@@ -101,6 +101,45 @@ RayPacket<T> random_packet(const Scene& s, std::mt19937_64& rng, int kind) {
     return p;
 }
 
+// Shapes moved after the build (a movie's frame): the refitted tree keeps
+// its topology and still finds exactly the brute-force hits.
+TYPED_TEST(BvhAgainstBruteForce, RefitAfterMovingKeepsTheTreeAndTheHits) {
+    using T = TypeParam;
+    const Scene s = soup(400, 40, 7);
+    Scene moved = s;
+    for (size_t i = 0; i < moved.triangles.size(); ++i) {
+        const Triangle<double>& t = moved.triangles[i];
+        const dvec3 d(std::sin(double(i)), std::cos(double(i)), 0.5);  // each its own way, up to ~1.5
+        moved.triangles[i] = Triangle<double>::make(t.v0 + d, t.v1 + d, t.v2 + d, t.material);
+    }
+    for (auto& sphere : moved.spheres) sphere.center = -sphere.center;
+    const auto built = FlatGeometry<T>::build(s);
+    const auto f = built.refit(moved);
+    ASSERT_EQ(f.bvh.nodes.size(), built.bvh.nodes.size());
+    EXPECT_EQ(f.bvh.prims, built.bvh.prims);  // the same tree, refitted
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> len(0, 20);
+    long hits = 0, mismatches = 0, shadow_mismatches = 0;
+    for (int k = 0; k < (1 << 16) / kLanes<T>; ++k) {
+        const RayPacket<T> ray = random_packet<T>(moved, rng, k % 3);
+        const LaneInts<T> active = first_lanes<T>(kLanes<T>);
+        const HitLanes<T> bvh = closest_hits(f, ray, active);
+        const HitLanes<T> all = brute_force_hits(f, ray, active);
+        Lanes<T> t_max;
+        for (int l = 0; l < kLanes<T>; ++l) t_max[l] = T(len(rng));
+        const LaneInts<T> blocked = occluded(f, ray, t_max, active) & active;
+        const LaneInts<T> expected = brute_force_blocked(f, ray, t_max, active);
+        for (int l = 0; l < kLanes<T>; ++l) {
+            hits += all.prim[l] != kNoHit;
+            mismatches += bvh.prim[l] != all.prim[l] || (all.prim[l] != kNoHit && bvh.t[l] != all.t[l]);
+            shadow_mismatches += (blocked[l] != 0) != (expected[l] != 0);
+        }
+    }
+    EXPECT_EQ(mismatches, 0);
+    EXPECT_EQ(shadow_mismatches, 0);
+    EXPECT_GT(hits, (1 << 16) / 4);
+}
+
 TYPED_TEST(BvhAgainstBruteForce, SameNearestHitAndSameShadowsForAMillionRays) {
     using T = TypeParam;
   // A soup walked through the BVH, and one small enough to be tested whole.
