@@ -101,6 +101,35 @@ RayPacket<T> random_packet(const Scene& s, std::mt19937_64& rng, int kind) {
     return p;
 }
 
+// Random packets aimed at `s` through the BVH walk and through the brute
+// force: how many rays hit, and how many nearest hits and shadow answers
+// differ.
+struct Tally {
+    long hits = 0, mismatches = 0, shadow_mismatches = 0;
+};
+template <typename T>
+Tally against_brute_force(const FlatGeometry<T>& f, const Scene& s, unsigned seed, int rays) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> len(0, 20);
+    Tally n;
+    for (int k = 0; k < rays / kLanes<T>; ++k) {
+        const RayPacket<T> ray = random_packet<T>(s, rng, k % 3);
+        const LaneInts<T> active = first_lanes<T>(kLanes<T> - (k % 4 == 0 ? 1 : 0));
+        const HitLanes<T> bvh = closest_hits(f, ray, active);
+        const HitLanes<T> all = brute_force_hits(f, ray, active);
+        Lanes<T> t_max;
+        for (int l = 0; l < kLanes<T>; ++l) t_max[l] = T(len(rng));
+        const LaneInts<T> blocked = occluded(f, ray, t_max, active) & active;
+        const LaneInts<T> expected = brute_force_blocked(f, ray, t_max, active);
+        for (int l = 0; l < kLanes<T>; ++l) {
+            n.hits += all.prim[l] != kNoHit;
+            n.mismatches += bvh.prim[l] != all.prim[l] || (all.prim[l] != kNoHit && bvh.t[l] != all.t[l]);
+            n.shadow_mismatches += (blocked[l] != 0) != (expected[l] != 0);
+        }
+    }
+    return n;
+}
+
 // Shapes moved after the build (a movie's frame): the refitted tree keeps
 // its topology and still finds exactly the brute-force hits.
 TYPED_TEST(BvhAgainstBruteForce, RefitAfterMovingKeepsTheTreeAndTheHits) {
@@ -117,27 +146,10 @@ TYPED_TEST(BvhAgainstBruteForce, RefitAfterMovingKeepsTheTreeAndTheHits) {
     const auto f = built.refit(moved);
     ASSERT_EQ(f.bvh.nodes.size(), built.bvh.nodes.size());
     EXPECT_EQ(f.bvh.prims, built.bvh.prims);  // the same tree, refitted
-    std::mt19937_64 rng(13);
-    std::uniform_real_distribution<double> len(0, 20);
-    long hits = 0, mismatches = 0, shadow_mismatches = 0;
-    for (int k = 0; k < (1 << 16) / kLanes<T>; ++k) {
-        const RayPacket<T> ray = random_packet<T>(moved, rng, k % 3);
-        const LaneInts<T> active = first_lanes<T>(kLanes<T>);
-        const HitLanes<T> bvh = closest_hits(f, ray, active);
-        const HitLanes<T> all = brute_force_hits(f, ray, active);
-        Lanes<T> t_max;
-        for (int l = 0; l < kLanes<T>; ++l) t_max[l] = T(len(rng));
-        const LaneInts<T> blocked = occluded(f, ray, t_max, active) & active;
-        const LaneInts<T> expected = brute_force_blocked(f, ray, t_max, active);
-        for (int l = 0; l < kLanes<T>; ++l) {
-            hits += all.prim[l] != kNoHit;
-            mismatches += bvh.prim[l] != all.prim[l] || (all.prim[l] != kNoHit && bvh.t[l] != all.t[l]);
-            shadow_mismatches += (blocked[l] != 0) != (expected[l] != 0);
-        }
-    }
-    EXPECT_EQ(mismatches, 0);
-    EXPECT_EQ(shadow_mismatches, 0);
-    EXPECT_GT(hits, (1 << 16) / 4);
+    const Tally n = against_brute_force(f, moved, 13, 1 << 16);
+    EXPECT_EQ(n.mismatches, 0);
+    EXPECT_EQ(n.shadow_mismatches, 0);
+    EXPECT_GT(n.hits, (1 << 16) / 4);
 }
 
 TYPED_TEST(BvhAgainstBruteForce, SameNearestHitAndSameShadowsForAMillionRays) {
@@ -148,28 +160,11 @@ TYPED_TEST(BvhAgainstBruteForce, SameNearestHitAndSameShadowsForAMillionRays) {
     const auto f = FlatGeometry<T>::build(s);
     ASSERT_FALSE(f.bvh.empty());
     EXPECT_EQ(f.small, triangles + spheres <= int(kMaxSubset));
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> len(0, 20);
-    const int packets = (kSanitized ? 1 << 16 : 1 << 20) / kLanes<T>;
-    long hits = 0, mismatches = 0, shadow_mismatches = 0;
-    for (int k = 0; k < packets; ++k) {
-        const RayPacket<T> ray = random_packet<T>(s, rng, k % 3);
-        const LaneInts<T> active = first_lanes<T>(kLanes<T> - (k % 4 == 0 ? 1 : 0));
-        const HitLanes<T> bvh = closest_hits(f, ray, active);
-        const HitLanes<T> all = brute_force_hits(f, ray, active);
-        Lanes<T> t_max;
-        for (int l = 0; l < kLanes<T>; ++l) t_max[l] = T(len(rng));
-        const LaneInts<T> blocked = occluded(f, ray, t_max, active) & active;
-        const LaneInts<T> expected = brute_force_blocked(f, ray, t_max, active);
-        for (int l = 0; l < kLanes<T>; ++l) {
-            hits += all.prim[l] != kNoHit;
-            mismatches += bvh.prim[l] != all.prim[l] || (all.prim[l] != kNoHit && bvh.t[l] != all.t[l]);
-            shadow_mismatches += (blocked[l] != 0) != (expected[l] != 0);
-        }
-    }
-    EXPECT_EQ(mismatches, 0) << triangles;
-    EXPECT_EQ(shadow_mismatches, 0) << triangles;
-    EXPECT_GT(hits, long(packets) * kLanes<T> / 4) << triangles;  // the aimed rays hit: the test has teeth
+    const int rays = kSanitized ? 1 << 16 : 1 << 20;
+    const Tally n = against_brute_force(f, s, 11, rays);
+    EXPECT_EQ(n.mismatches, 0) << triangles;
+    EXPECT_EQ(n.shadow_mismatches, 0) << triangles;
+    EXPECT_GT(n.hits, rays / 4) << triangles;  // the aimed rays hit: the test has teeth
   }
 }
 
