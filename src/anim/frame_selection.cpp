@@ -18,13 +18,18 @@ int parse_nonnegative(const std::string& s, const std::string& what) {
 }  // namespace
 
 FrameRange parse_range(const std::string& text) {
-    const auto colon = text.find(':');
-    if (colon == std::string::npos)
-        throw std::invalid_argument("--range must look like A:B (frames A to B-1), got '" + text + "'");
-    FrameRange r{parse_nonnegative(text.substr(0, colon), "--range start"),
-                 parse_nonnegative(text.substr(colon + 1), "--range end")};
+    const auto sep = text.find_first_of(":-");
+    if (sep == std::string::npos)
+        throw std::invalid_argument("--range must look like A-B (frames A to B), A:B (A to B-1) or A: (A to the end), got '" +
+                                    text + "'");
+    const bool inclusive = text[sep] == '-';
+    FrameRange r{parse_nonnegative(text.substr(0, sep), "--range start"), -1};
+    const std::string end = text.substr(sep + 1);
+    if (end.empty()) return r;  // open: to the movie's end
+    r.end = parse_nonnegative(end, "--range end") + (inclusive ? 1 : 0);
     if (r.begin >= r.end)
-        throw std::invalid_argument("--range " + text + " is empty: A must be less than B");
+        throw std::invalid_argument("--range " + text + " is empty: " +
+                                    (inclusive ? "A-B needs A <= B" : "A:B needs A < B (B is not rendered)"));
     return r;
 }
 
@@ -42,10 +47,11 @@ Shard parse_shard(const std::string& text) {
 std::vector<int> select_frames(int frame_count, std::optional<FrameRange> range,
                                std::optional<Shard> shard) {
     FrameRange r = range.value_or(FrameRange{0, frame_count});
-    if (r.end > frame_count)
-        throw std::invalid_argument("--range " + std::to_string(r.begin) + ":" +
-                                    std::to_string(r.end) + " reaches past the movie's " +
-                                    std::to_string(frame_count) + " frames");
+    if (r.end < 0) r.end = frame_count;
+    if (r.begin >= frame_count || r.end > frame_count)
+        throw std::invalid_argument("frame " + std::to_string(r.begin >= frame_count ? r.begin : r.end - 1) +
+                                    " is past the movie's end: its " + std::to_string(frame_count) +
+                                    " frames are 0 to " + std::to_string(frame_count - 1));
     const Shard s = shard.value_or(Shard{0, 1});
     std::vector<int> frames;
     for (int i = r.begin; i < r.end; ++i)

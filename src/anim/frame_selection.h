@@ -11,7 +11,7 @@ namespace fh {
 
 struct FrameRange {
     int begin = 0;  // [begin, end)
-    int end = 0;
+    int end = -1;   // -1: to the movie's end
 };
 
 struct Shard {
@@ -24,7 +24,8 @@ struct Shard {
 std::vector<int> select_frames(int frame_count, std::optional<FrameRange> range,
                                std::optional<Shard> shard);
 
-// "A:B" -> FrameRange; "K/N" -> Shard; std::invalid_argument on bad syntax or values.
+// "A:B" (A to B-1, a Python slice), "A-B" (A to B inclusive, as POV-Ray's
+// +SF/+EF and Blender's -s/-e), "A:" or "A-" (to the end) -> FrameRange; "K/N" -> Shard; std::invalid_argument on bad syntax or values.
 FrameRange parse_range(const std::string& text);
 Shard parse_shard(const std::string& text);
 

@@ -17,25 +17,6 @@
 
 namespace fh {
 
-const char* const kAccuracyHelp =
-    R"(usage: firsthit accuracy FILE [options]
-
-Measures what each accuracy knob costs: renders a reference (double precision,
-256 samples per pixel, glazing depth 16 - deeper if 16 has not converged),
-then sweeps samples per pixel 1..64 (uniform and adaptive), depth 0..8 and
-float vs double, and reports for each setting the median render time, the
-rays traced and the error against the reference (RMSE, PSNR, worst pixel).
-
-  --frame N / --camera NAME   the frame, as for render
-  --csv OUT.csv       write the table (default: print it on stdout)
-  --plot OUT.png      plot error against time, one curve per knob (gnuplot)
-  --runs K            timed runs per setting, median reported (default 3)
-  --threads N         worker threads (default: one per core)
-  --reference-spp N   samples per pixel of the reference (default 256)
-  --max-spp N         largest samples per pixel swept (default 64)
-  --aa-threshold X    adaptive anti-aliasing threshold, 0..255 (default 8)
-)";
-
 namespace {
 
 std::string number(double v) {
@@ -94,12 +75,7 @@ unset multiplot
 
 }  // namespace
 
-int run_accuracy(const Words& words) {
-    if (wants_help(words, kAccuracyHelp)) return 0;
-    auto spec = job_flags();
-    spec.insert(spec.end(), {{"--csv"}, {"--plot"}, {"--runs"}, {"--threads"}, {"--reference-spp"},
-                             {"--max-spp"}});
-    const Args args = Args::parse("accuracy", words, spec);
+int run_accuracy(const Args& args) {
     const Job job = job_from_args(args);
     AccuracyOptions options;
     options.runs = args.integer("--runs", 3, 1, 1000);

@@ -10,28 +10,7 @@
 
 namespace fh {
 
-const char* const kBenchHelp =
-    R"(usage: firsthit bench FILE [options]
-
-Renders one frame several times after a warm-up run and prints, as key: value
-lines, the median time per frame (rendering only, no PNG), rays per second and
-the rays traced by kind; and, apart, the time to load the file (load_ms) and
-to prepare the scene once for all frames (prepare_ms: flattening it for the
-tracer and building its BVH, of which build_ms the BVH; bvh_nodes its size).
-
-  --frame N        movie files: the frame (default 0)
-  --camera NAME    scene files: the camera (default: the first listed)
-  --runs K         timed runs (default 7)
-  --threads N      worker threads (default: one per core)
-  --spp N, --depth N, --precision P, --adaptive, --aa-threshold X,
-  --aa-samples N, --no-prune   as for render
-)";
-
-int run_bench(const Words& words) {
-    if (wants_help(words, kBenchHelp)) return 0;
-    auto spec = job_flags();
-    spec.insert(spec.end(), {{"--threads"}, {"--runs"}});
-    const Args args = Args::parse("bench", words, spec);
+int run_bench(const Args& args) {
     const auto load_start = std::chrono::steady_clock::now();
     const Job job = job_from_args(args);
     const double load_ms =

@@ -11,68 +11,33 @@
 #include "cli/commands.h"
 #include "cli/job.h"
 #include "cli/progress.h"
+#include "cli/human.h"
 #include "cli/stats_output.h"
 #include "io/input_error.h"
 #include "io/movie_loader.h"
 #include "io/scene_loader.h"
+#include "io/parse_int.h"
+#include "pipeline/frame_files.h"
 #include "pipeline/frame_pipeline.h"
 #include "pipeline/job.h"
 
 namespace fh {
-
-const char* const kFramesHelp =
-    R"(usage: firsthit frames MOVIE [options]
-
-Renders the frames of a movie file to DIR/frame_0000.png, frame_0001.png, ...
-Each file is written under a temporary name and renamed, so a frame file is
-always whole. On a terminal a progress line shows frames done, frames per
-second and the time left.
-
-  --out DIR        where the frames go (default: output/NAME, NAME the movie
-                   file's name without .yaml)
-  --range A:B      only frames A .. B-1
-  --shard K/N      only frames i with i mod N == K (0 <= K < N), e.g. one task
-                   of a cluster job array; combines with --range
-  --shard auto     the shard from the cluster scheduler's environment: a
-                   Slurm job array (task SLURM_ARRAY_TASK_ID minus
-                   SLURM_ARRAY_TASK_MIN, of SLURM_ARRAY_TASK_COUNT) or a
-                   Kubernetes Indexed Job (JOB_COMPLETION_INDEX, of --shards N)
-  --shards N       the shard count for --shard auto in a Kubernetes Indexed
-                   Job (the Job's completions)
-  --resume         skip frames whose file is already complete (after an
-                   interrupted or killed run: renders exactly the missing ones)
-  --raw-video F    also write every frame, in order, as raw RGB24 to file F
-                   ('-': standard output), for an encoder to read while the
-                   frames render: `... --raw-video - | ffmpeg -f rawvideo
-                   -pix_fmt rgb24 -s WxH -r FPS -i - ...` (scripts/encode.sh
-                   --raw does this); not with --shard or --resume
-  --raw-pix-fmt P  the raw video's pixels: rgb24 (default) or yuv420p,
-                   BT.601 limited range as ffmpeg converts RGB, luma the
-                   same bytes, chroma the mean of each 2x2 block; converted
-                   on the render threads, which spares the encoder the work
-  --threads N      worker threads (default: one per core)
-  --spp N, --depth N, --precision P, --adaptive, --aa-threshold X,
-  --aa-samples N, --no-prune   as for render
-  --stats          print the rays traced, as key: value lines on stdout
-  --quiet          no progress line
-
-SIGINT or SIGTERM (Ctrl-C): no new frames are started, the frames in flight
-are finished if they take less than half a second more (else abandoned),
-and the run exits with 128 + the signal's number; run it again with --resume.
-A killed run leaves only whole frames; temporaries (frame_NNNN.png.tmp-...)
-of dead runs are removed by the next run.
-)";
 
 namespace {
 
 // The progress line, and the words for an interrupted run.
 class FramesProgress : public FramesObserver {
 public:
-    FramesProgress(std::string folder, bool show) : folder_(std::move(folder)), show_(show) {}
+    FramesProgress(std::string folder, bool show, bool show_messages)
+        : folder_(std::move(folder)), show_(show), show_messages_(show_messages) {}
 
     void removed_temporaries(int count) override {
-        std::cerr << "firsthit: removed " << count << " temporary file(s) left by an interrupted run in "
-                  << folder_ << "\n";
+        if (show_messages_)
+            std::cerr << "firsthit: removed " << count << " temporary file(s) left by an interrupted run in "
+                      << folder_ << "\n";
+    }
+    void removed_old_frames(int count) override {
+        if (show_messages_) std::cerr << "firsthit: --clean removed " << plural(count, "old frame") << " in " << folder_ << "\n";
     }
     void starting(int frames) override { progress_.emplace(frames, show_); }
     void frame_done(int) override { progress_->frame_done(); }
@@ -87,11 +52,11 @@ public:
 
 private:
     std::string folder_;
-    bool show_;
+    bool show_, show_messages_;
     std::optional<Progress> progress_;
 };
 
-// --range and --shard (or --shard auto) as the frames of an n-frame movie.
+// --frame, --range and --shard (or --shard auto) as the frames of an n-frame movie.
 std::vector<int> selected_frames(const Args& args, int n) {
     // --shards N: the count for --shard auto in a Kubernetes Indexed Job.
     const auto shards = args.has("--shards") ? std::optional(args.integer("--shards", 1, 1, 1'000'000)) : std::nullopt;
@@ -99,22 +64,23 @@ std::vector<int> selected_frames(const Args& args, int n) {
     try {
         const auto range = args.value("--range");
         const auto shard = args.value("--shard");
+        if (const auto frame = args.value("--frame")) {
+            if (range) throw UsageError("--frame N is --range N-N: give one of them");
+            const int i = parse_int(*frame, "--frame", 0, n - 1);
+            return select_frames(n, FrameRange{i, i + 1}, shard ? std::optional(parse_shard_option(*shard, shards)) : std::nullopt);
+        }
         return select_frames(n, range ? std::optional(parse_range(*range)) : std::nullopt,
                              shard ? std::optional(parse_shard_option(*shard, shards)) : std::nullopt);
     } catch (const std::invalid_argument& e) {
-        throw UsageError(e.what());
+        const auto range = args.value("--range");
+        const std::string what = e.what();
+        throw UsageError(range && what.rfind("--range", 0) != 0 ? "--range " + *range + ": " + what : what);
     }
 }
 
 }  // namespace
 
-int run_frames(const Words& words) {
-    if (wants_help(words, kFramesHelp)) return 0;
-    const Args args = Args::parse(
-        "frames", words,
-        {{"--out"}, {"--range"}, {"--shard"}, {"--shards"}, {"--resume", false}, {"--threads"}, {"--spp"},
-         {"--depth"}, {"--precision"}, {"--no-prune", false}, {"--adaptive", false}, {"--aa-threshold"},
-         {"--aa-samples"}, {"--stats", false}, {"--quiet", false}, {"--raw-video"}, {"--raw-pix-fmt"}});
+int run_frames(const Args& args) {
     if (args.positional().size() != 1)
         throw UsageError("expected one MOVIE file, got " + std::to_string(args.positional().size()));
     const std::string file = args.positional()[0];
@@ -127,17 +93,26 @@ int run_frames(const Words& words) {
     JobRequest what;
     what.file = file;
     what.check_cameras = false;  // after the frame flags, as their errors come first
+    what.size = size_from_args(args);
     const Job job = load_job(what);
 
     FramesRequest request;
     request.frames = selected_frames(args, job.movie.frame_count());
-    print_warnings(job);  // the scene's
-    for (const std::string& warning : check_movie_cameras(file, job.movie)) std::cerr << warning << "\n";
+    const bool quiet = args.has("--quiet");
+    if (!quiet) print_warnings(job);  // the scene's
+    for (const std::string& warning : check_movie_cameras(file, job.movie))
+        if (!quiet) std::cerr << warning << "\n";
     RenderSettings settings = job.movie.settings;
     apply_quality_flags(args, settings);
     request.threads = args.integer("--threads", 0, 0, 1024);
-    request.folder = args.value("--out").value_or((std::filesystem::path("output") / std::filesystem::path(file).stem()).string());
+    request.files = parse_frame_files(
+        args.value("--out").value_or((std::filesystem::path("output") / std::filesystem::path(file).stem()).string()));
+    request.movie_file = file;
     request.resume = args.has("--resume");
+    request.clean = args.has("--clean");
+    if (request.clean && request.resume) throw UsageError("--clean removes the frames --resume would keep: give one");
+    if (request.clean && args.has("--shard"))
+        throw UsageError("--clean with --shard would remove the frames other shards render: clean once, before");
     if (const auto raw = args.value("--raw-video")) {
         if (args.has("--shard") || args.has("--resume"))
             throw UsageError("--raw-video streams whole runs of frames: not with --shard or --resume");
@@ -153,7 +128,7 @@ int run_frames(const Words& words) {
         throw UsageError("--raw-pix-fmt goes with --raw-video");
     }
 
-    FramesProgress progress(request.folder.string(), !args.has("--quiet") && isatty(STDERR_FILENO));
+    FramesProgress progress(request.files.folder.string(), !quiet && isatty(STDERR_FILENO), !quiet);
     const FramesSummary run = render_frames(job.movie, settings, request, progress);
     progress.finish();
     if (run.interrupt_signal) {
@@ -162,12 +137,14 @@ int run_frames(const Words& words) {
         return 128 + run.interrupt_signal;
     }
     const double fps = run.seconds > 0 ? run.rendered / run.seconds : 0;
-    std::cerr << "rendered " << run.to_render << " frames in " << run.seconds << " s (" << fps
-              << " frames/s) into " << request.folder.string() << "\n";
+    if (!quiet)
+        std::cerr << "rendered " << plural(run.to_render, "frame") << " in " << human_duration(run.seconds) << " ("
+                  << human_rate(fps) << " frames/s) into " << request.files.folder.string() << "\n";
     if (args.has("--stats")) {
         std::cout << "frames: " << run.to_render << "\n"
                   << "seconds: " << run.seconds << "\n"
                   << "frames_per_second: " << fps << "\n";
+        if (settings.adaptive) std::cout << "refined_pixels: " << run.refined_pixels << "\n";
         print_counts(std::cout, run.counts);
     }
     return 0;

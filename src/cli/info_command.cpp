@@ -12,14 +12,6 @@
 
 namespace fh {
 
-const char* const kInfoHelp =
-    R"(usage: firsthit info FILE
-
-Prints what a scene or movie file holds, as key: value lines: for a movie its
-frame count, fps, seconds, camera and image size; for a scene its surfaces,
-lights and cameras.
-)";
-
 namespace {
 void print_scene(const Scene& s, const RenderSettings& settings) {
     std::cout << "materials: " << s.materials.size() << "\n"
@@ -40,9 +32,7 @@ void print_scene(const Scene& s, const RenderSettings& settings) {
 }
 }  // namespace
 
-int run_info(const Words& words) {
-    if (wants_help(words, kInfoHelp)) return 0;
-    const Args args = Args::parse("info", words, {});
+int run_info(const Args& args) {
     if (args.positional().size() != 1) throw UsageError("expected one FILE");
     const std::string file = args.positional()[0];
     if (is_movie_file(file)) {

@@ -7,9 +7,18 @@
 
 namespace fh {
 
-std::vector<FlagSpec> job_flags() {
-    return {{"--frame"}, {"--camera"}, {"--spp"}, {"--depth"}, {"--precision"}, {"--no-prune", false},
-            {"--adaptive", false}, {"--aa-threshold"}, {"--aa-samples"}};
+SizeOverride size_from_args(const Args& args) {
+    SizeOverride size;
+    if (const auto r = args.value("--resolution")) {
+        if (args.has("--scale")) throw UsageError("--resolution and --scale both set the size: give one");
+        const size_t x = r->find_first_of("xX");
+        if (x == std::string::npos)
+            throw UsageError("--resolution takes WIDTHxHEIGHT, e.g. 160x120, got '" + *r + "'");
+        size.width = parse_int(r->substr(0, x), "--resolution's width", 1, Limits::max_image_side);
+        size.height = parse_int(r->substr(x + 1), "--resolution's height", 1, Limits::max_image_side);
+    }
+    size.scale = args.number("--scale", 0, 1e-6, Limits::max_image_side);
+    return size;
 }
 
 void apply_quality_flags(const Args& args, RenderSettings& s) {
@@ -47,10 +56,10 @@ const std::string& one_file(const Args& args) {
 
 Job job_from_args(const Args& args, const char* movie_camera_note) {
     one_file(args);
-    JobRequest request{args.positional()[0], args.value("--camera"), args.value("--frame")};
+    JobRequest request{args.positional()[0], args.value("--camera"), args.value("--frame"), size_from_args(args)};
     if (movie_camera_note) request.movie_camera_note = movie_camera_note;
     Job job = load_job(request);
-    print_warnings(job);
+    if (!args.has("--quiet")) print_warnings(job);
     apply_quality_flags(args, job.movie.settings);
     return job;
 }

@@ -1,6 +1,6 @@
-// The flags that pick what to render and how well (render, bench, accuracy,
-// view): FILE, --frame, --camera and the quality flags, turned into a loaded
-// Job (pipeline/job.h) and its settings.
+// The flags that pick what to render and how well (render, frames, bench,
+// accuracy, view): FILE, --frame, --camera, --resolution, --scale and the
+// quality flags, turned into a loaded Job (pipeline/job.h) and its settings.
 #pragma once
 
 #include <string>
@@ -12,13 +12,14 @@
 
 namespace fh {
 
-// The flags job_from_args reads.
-std::vector<FlagSpec> job_flags();
-
-// One positional FILE, --camera and --frame: the loaded job (its warnings
-// printed to stderr), with the quality flags applied to job.movie.settings.
-// movie_camera_note: the command's own words after "FILE is a movie (".
+// One positional FILE, --camera, --frame and the size flags: the loaded job
+// (its warnings printed to stderr unless --quiet), with the quality flags
+// applied to job.movie.settings. movie_camera_note: the command's own words
+// after "FILE is a movie (".
 Job job_from_args(const Args& args, const char* movie_camera_note = nullptr);
+
+// --resolution WxH or --scale F (not both); neither: no override.
+SizeOverride size_from_args(const Args& args);
 
 // --spp, --depth, --precision, --adaptive, --aa-* and --no-prune on top of
 // the file's settings.

@@ -1,9 +1,13 @@
 // firsthit: the command line. Every error is caught here, once, and printed as
 // one line: bad input or usage exits 2, anything else 1.
+#include <algorithm>
 #include <cstring>
+#include <map>
 #include <iostream>
 
+#include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/flags.h"
 #include "core/simd.h"
 #include "io/input_error.h"
 
@@ -11,45 +15,26 @@ namespace fh {
 
 namespace {
 
-const char* const kHelp =
-    R"(firsthit - a fast, exact first-hit (Whitted-style) ray tracer and its movie pipeline
+// The commands' entry points, by name (their flags and help: cli/flags.h).
+using Run = int (*)(const Args&);
+const std::map<std::string_view, Run> kRun = {
+    {"render", run_render}, {"frames", run_frames}, {"bench", run_bench},
+    {"accuracy", run_accuracy}, {"info", run_info}, {"view", run_view},
+};
 
-usage:
-  firsthit render  FILE [--frame N] [--camera NAME] [--spp N] [--depth N] [--threads N] [--stats] [-o OUT.png]
-  firsthit frames  MOVIE [--out DIR] [--range A:B] [--shard K/N] [--resume] [--threads N]
-  firsthit bench   FILE [--frame N] [--runs K] [--threads N] [--spp N] [--depth N]
-  firsthit accuracy FILE [--frame N] [--csv OUT.csv] [--plot OUT.png]
-  firsthit info    FILE
-  firsthit view    FILE [--frame N] [--camera NAME]
-  firsthit --help | --version
-
-commands:
-  render   render one frame of a scene or movie to PNG
-  frames   render the frames of a movie to a folder of PNGs (on every core)
-  bench    time one frame: median ms per frame and rays per second
-  accuracy what each accuracy knob costs: error against a reference vs time
-  info     what a scene or movie file holds
-  view     a window showing a frame: P switches cameras, arrows and Space
-           scrub and play a movie, S saves the shown frame (needs GLFW)
-
-FILE is a scene file or a movie file (a movie names its scene); see
-animations/scene.yaml and animations/movie1.yaml. 'firsthit COMMAND --help'
-explains a command's options.
-
-exit status: 0 success, 2 bad input or usage (one line on stderr:
-FILE:LINE:COLUMN: error: WHAT), 1 any other failure. A failed run writes no
-partial image.
-)";
+bool asks_for_help(const Words& words) {
+    return std::any_of(words.begin(), words.end(), [](const std::string& w) { return w == "--help" || w == "-h"; });
+}
 
 int dispatch(int argc, char** argv) {
     if (argc < 2) {
-        std::cerr << kHelp;
+        std::cerr << overview_help() << "\n";
         return 2;
     }
     const std::string cmd = argv[1];
     const Words words(argv + 2, argv + argc);
     if (cmd == "--help" || cmd == "-h" || cmd == "help") {
-        std::cout << kHelp;
+        std::cout << overview_help() << "\n";
         return 0;
     }
     if (cmd == "--version") {
@@ -57,25 +42,22 @@ int dispatch(int argc, char** argv) {
                   << "-byte SIMD, " << kLanes<double> << " doubles or " << kLanes<float> << " floats a packet)\n";
         return 0;
     }
-    if (cmd == "render") return run_render(words);
-    if (cmd == "frames") return run_frames(words);
-    if (cmd == "bench") return run_bench(words);
-    if (cmd == "info") return run_info(words);
-    if (cmd == "accuracy") return run_accuracy(words);
-    if (cmd == "view") return run_view(words);
-    throw UsageError("unknown command '" + cmd + "'; see 'firsthit --help'");
+    const CommandSpec* command = find_command(cmd);
+    if (!command) {
+        std::vector<std::string> names;
+        for (const CommandSpec& c : all_commands()) names.emplace_back(c.name);
+        const std::string near = closest_match(cmd, names);
+        throw UsageError("unknown command '" + cmd + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+                         "; see 'firsthit --help'");
+    }
+    if (asks_for_help(words)) {
+        std::cout << command_help(*command) << "\n";
+        return 0;
+    }
+    return kRun.at(command->name)(Args::parse(*command, words));
 }
 
 }  // namespace
-
-bool wants_help(const Words& words, const char* help) {
-    for (const auto& w : words)
-        if (w == "--help" || w == "-h") {
-            std::cout << help;
-            return true;
-        }
-    return false;
-}
 
 }  // namespace fh
 

@@ -1,37 +1,18 @@
-// firsthit render FILE: one frame to PNG.
+// firsthit render FILE: one frame to an image file (or standard output).
 #include <filesystem>
 #include <iostream>
 
+#include <unistd.h>
+
 #include "cli/commands.h"
+#include "cli/human.h"
 #include "cli/job.h"
 #include "cli/stats_output.h"
+#include "io/image_writer.h"
+#include "io/input_error.h"
 #include "pipeline/frame_pipeline.h"
 
 namespace fh {
-
-const char* const kRenderHelp =
-    R"(usage: firsthit render FILE [options]
-
-Renders one frame of a scene or movie file to a PNG.
-
-  FILE               a scene file, or a movie file (which names its scene)
-  --camera NAME      scene files: the camera to render (default: the first listed)
-  --frame N          movie files: the frame index, 0 .. frames-1 (default 0)
-  --spp N            samples per pixel (default: the file's, else 1)
-  --depth N          maximum chain of reflection rays (default: the file's, else 5)
-  --precision P      float or double: the tracer's scalar type (default double)
-  --adaptive         adaptive anti-aliasing: pixels that differ from a
-                     neighbour by more than --aa-threshold (0..255, default 8)
-                     are rendered again with --aa-samples samples (default 16)
-  --threads N        worker threads (default: one per core)
-  --no-prune         debug: simulate every effect asked for, even those the
-                     effect plan proves cannot change a pixel (same image, slower)
-  --stats            print the effect plan (what is simulated and why the
-                     rest is not) and the rays traced by kind, as key: value
-                     lines on stdout
-  -o, --output OUT   the PNG to write (default: FILE's name with .png, in the
-                     current folder; for a movie, NAME_frameNNNN.png)
-)";
 
 namespace {
 std::string default_output(const Job& job) {
@@ -44,26 +25,34 @@ std::string default_output(const Job& job) {
 }
 }  // namespace
 
-int run_render(const Words& words) {
-    if (wants_help(words, kRenderHelp)) return 0;
-    auto spec = job_flags();
-    spec.insert(spec.end(), {{"--threads"}, {"--stats", false}, {"-o"}, {"--output"}});
-    const Args args = Args::parse("render", words, spec);
+int run_render(const Args& args) {
+    one_file(args);
+    std::string out = args.value("--output").value_or("");
+    if (out == "-") {
+        if (args.has("--stats")) throw UsageError("-o - writes the image to standard output: not with --stats");
+        if (isatty(STDOUT_FILENO))
+            throw UsageError("-o - writes PNG bytes to standard output, which is a terminal; redirect it "
+                             "(> out.png) or pipe it");
+    }
+    if (!out.empty()) image_format_of(out);  // a bad name before loading anything
     const Job job = job_from_args(args);
     const int threads = args.integer("--threads", 0, 0, 1024);
-    std::string out = args.value("-o").value_or(args.value("--output").value_or(""));
     if (out.empty()) out = default_output(job);
     const StillResult still = render_to_file(job, out, threads);
     const FrameResult& r = still.frame;
+    if (!args.has("--quiet"))
+        std::cerr << "wrote " << (out == "-" ? std::string("PNG to standard output") : out) << " ("
+                  << job.camera.width << "x" << job.camera.height << ", 1 frame in " << human_duration(r.render_ms / 1000)
+                  << ")\n";
     if (args.has("--stats")) {
         std::cout << "file: " << job.file << "\n";
         if (job.frame >= 0) std::cout << "frame: " << job.frame << "\n";
         std::cout << "camera: " << job.camera.name << "\n"
                   << "width: " << job.camera.width << "\n"
                   << "height: " << job.camera.height << "\n"
-                  << "samples_per_pixel: " << job.settings().samples_per_pixel << "\n"
                   << "precision: " << precision_name(job.settings().precision) << "\n"
                   << "threads: " << still.threads << "\n";
+        print_sampling(std::cout, job.settings(), r);
         std::cout << "triangles: " << job.scene().triangles.size() << "\n"
                   << "degenerate_triangles_dropped: " << job.scene().degenerate_mesh_triangles << "\n";
         print_plan(std::cout, r.plan);

@@ -18,14 +18,27 @@ inline void print_counts(std::ostream& out, const RayCounts& c) {
         << "nonfinite_samples: " << c.nonfinite_samples << "\n";
 }
 
-// The effect plan: what is simulated, and why the rest is not.
+// The effect plan: what is simulated, and what is not and why. One line
+// says what was skipped, so it cannot contradict another.
 inline void print_plan(std::ostream& out, const EffectPlan& plan) {
     out << "effects: " << plan.effects.names() << "\n"
         << "max_depth: " << plan.max_depth << "\n"
-        << "pruned: " << (plan.pruned ? "yes" : "no (--no-prune)") << "\n"
         << "skipped: ";
     for (size_t i = 0; i < plan.skipped.size(); ++i) out << (i ? "; " : "") << plan.skipped[i];
-    out << (plan.skipped.empty() ? "nothing\n" : "\n");
+    if (plan.skipped.empty())
+        out << (plan.pruned ? "nothing (every effect asked for can change a pixel)"
+                            : "nothing (--no-prune: every effect asked for is simulated)");
+    out << "\n";
+}
+
+// Samples per pixel, and with adaptive anti-aliasing what it did.
+inline void print_sampling(std::ostream& out, const RenderSettings& s, const FrameResult& r) {
+    out << "samples_per_pixel: " << s.samples_per_pixel << "\n"
+        << "adaptive: " << (s.adaptive ? "on" : "off") << "\n";
+    if (!s.adaptive) return;
+    out << "adaptive_threshold: " << s.adaptive_threshold << "\n"
+        << "adaptive_samples: " << s.adaptive_samples << "\n"
+        << "refined_pixels: " << r.refined_pixels << "\n";
 }
 
 }  // namespace fh

@@ -101,4 +101,17 @@ bool is_complete_png(const std::string& path) {
            std::memcmp(tail, iend, sizeof tail) == 0;
 }
 
+std::optional<std::pair<int, int>> png_size(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    unsigned char head[24];  // signature, IHDR's length and type, width, height
+    if (!in.read(reinterpret_cast<char*>(head), sizeof head) || std::memcmp(head + 1, "PNG", 3) != 0 ||
+        std::memcmp(head + 12, "IHDR", 4) != 0)
+        return std::nullopt;
+    auto big_endian = [&](int at) {
+        return int((std::uint32_t(head[at]) << 24 | std::uint32_t(head[at + 1]) << 16 |
+                    std::uint32_t(head[at + 2]) << 8 | head[at + 3]) & 0x7fffffff);
+    };
+    return std::pair(big_endian(16), big_endian(20));
+}
+
 }  // namespace fh

@@ -4,7 +4,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/image.h"
@@ -22,5 +24,8 @@ void write_png(const std::string& path, const Image& image);
 
 // A PNG file that is whole: the signature, then chunks up to IEND at the end.
 bool is_complete_png(const std::string& path);
+
+// A PNG file's width and height, from its header; nullopt if it is no PNG.
+std::optional<std::pair<int, int>> png_size(const std::string& path);
 
 }  // namespace fh

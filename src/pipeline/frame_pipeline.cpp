@@ -9,6 +9,7 @@
 #include "anim/frame_selection.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "io/image_writer.h"
 #include "io/png_writer.h"
 #include "pipeline/interrupt.h"
 #include "render/prepared_scene.h"
@@ -25,14 +26,19 @@ FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, 
                             FramesObserver& observer) {
     if (request.raw_video && request.resume)
         throw UsageError("raw video streams whole runs of frames: not with resume");
-    const std::filesystem::path& out = request.folder;
+    const FrameFiles& files = request.files;
     const int n = movie.frame_count();
-    prepare_output_folder(out.string());
-    if (const int removed = remove_stale_temporaries(out.string())) observer.removed_temporaries(removed);
+    if (request.clean && request.resume) throw UsageError("clean removes the frames resume would keep: not both");
+    const FramesOrigin origin{std::filesystem::absolute(request.movie_file).lexically_normal().string(), n, movie.fps,
+                              movie.camera.width, movie.camera.height,
+                              files.prefix + "%0" + std::to_string(files.name(0, n).size() - files.prefix.size() -
+                                                                   files.suffix.size()) + "d" + files.suffix};
+    if (const int removed = claim_frame_folder(files, origin, request.clean)) observer.removed_old_frames(removed);
+    if (const int removed = remove_stale_temporaries(files.folder.string())) observer.removed_temporaries(removed);
 
     std::vector<int> frames = request.frames;
     if (request.resume)
-        std::erase_if(frames, [&](int i) { return is_complete_png((out / frame_file_name(i, n)).string()); });
+        std::erase_if(frames, [&](int i) { return is_complete_png(files.path(i, n).string()); });
     std::optional<RawVideoWriter> raw_video;
     if (request.raw_video) raw_video.emplace(*request.raw_video, kRawVideoWindow, request.raw_pixel_format);
 
@@ -76,7 +82,7 @@ FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, 
             }
             {
                 std::shared_lock lock(write_mutex);
-                write_png((out / frame_file_name(i, n)).string(), r.image);
+                write_png(files.path(i, n).string(), r.image);
             }
             if (raw_video) raw_video->put(task, std::move(r.image));
         } catch (const std::exception& e) {
@@ -86,6 +92,7 @@ FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, 
         {
             std::lock_guard lock(counts_mutex);
             summary.counts += r.counts;
+            summary.refined_pixels += r.refined_pixels;
             ++done;
             observer.frame_done(i);
         }
@@ -101,7 +108,8 @@ FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, 
 }
 
 StillResult render_to_file(const Job& job, const std::string& path, int threads) {
-    check_output_file(path);  // before rendering: a bad place is bad input
+    image_format_of(path);  // before rendering: a bad name or place is bad input
+    if (path != "-") check_output_file(path);
     std::mutex write_mutex;
     bool written = false;
     const InterruptWatch watch(std::chrono::milliseconds(0), [&](int sig) {
@@ -116,7 +124,7 @@ StillResult render_to_file(const Job& job, const std::string& path, int threads)
     ThreadPool pool(threads);
     StillResult r{PreparedScene(job.scene(), job.settings(), &pool).render(job.camera, &pool), pool.size()};
     const std::lock_guard lock(write_mutex);
-    write_png(path, r.frame.image);
+    write_image(path, r.frame.image);
     written = true;
     return r;
 }

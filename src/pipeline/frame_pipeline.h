@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "anim/movie.h"
+#include "pipeline/frame_files.h"
 #include "pipeline/job.h"
 #include "io/raw_video_writer.h"
 #include "render/render.h"
@@ -22,8 +23,10 @@ namespace fh {
 
 struct FramesRequest {
     std::vector<int> frames;  // which frames, increasing (anim/frame_selection.h)
-    std::filesystem::path folder;
-    bool resume = false;  // skip the frames whose file is already complete
+    FrameFiles files;         // where they go (pipeline/frame_files.h)
+    std::string movie_file;   // the movie's file, for the frames' movie file
+    bool resume = false;      // skip the frames whose file is already complete
+    bool clean = false;       // remove frames of another movie or size under the same names
     // Also every frame in order to this file ("-": standard output); needs
     // the whole selection rendered, so not with resume.
     std::optional<std::string> raw_video;
@@ -40,6 +43,7 @@ class FramesObserver {
 public:
     virtual ~FramesObserver() = default;
     virtual void removed_temporaries(int /*count*/) {}
+    virtual void removed_old_frames(int /*count*/) {}
     virtual void starting(int /*frames_to_render*/) {}
     virtual void frame_done(int /*frame*/) {}
     // A signal came and the frames in flight overran the grace period: the
@@ -53,17 +57,21 @@ struct FramesSummary {
     int to_render = 0;  // the selection less the frames resume skipped
     double seconds = 0;
     RayCounts counts;
+    size_t refined_pixels = 0;  // adaptive anti-aliasing's second pass, all frames
     int interrupt_signal = 0;  // the run stopped early on this signal (0: it did not)
 };
 
 // Prepares the folder (created if missing; stale temporaries of killed runs
-// removed), then renders. Throws InputError for a bad folder, UsageError for
-// raw video with resume.
+// removed; frames of another movie or size refused, or removed with clean;
+// the frames' movie file written: claim_frame_folder), then renders. Throws
+// InputError for a bad folder, UsageError for another movie's frames or raw
+// video with resume.
 FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, const FramesRequest& request,
                             FramesObserver& observer);
 
 // The job's frame rendered on `threads` workers (0: one per core) and
-// written to `path` as PNG, whole or not at all. The place is checked before
+// written to `path` in the format its extension names (io/image_writer.h;
+// "-": PNG to standard output), whole or not at all. The place is checked before
 // rendering (InputError). SIGINT/SIGTERM during the render ends the process
 // at once with 128 + signal and nothing written; during the write, the
 // write finishes first.

@@ -1,5 +1,8 @@
 #include "pipeline/job.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "io/closest_match.h"
 #include "io/input_error.h"
 #include "io/movie_loader.h"
@@ -40,6 +43,23 @@ std::vector<std::string> check_movie_cameras(const std::string& file, const Movi
             "; using the fallback up axis"};
 }
 
+void resize_camera(Camera& camera, const SizeOverride& size) {
+    auto side = [&](int file_side) {
+        const double v = size.width > 0 ? 0 : std::max(1.0, std::round(file_side * size.scale));
+        if (v > Limits::max_image_side)
+            throw UsageError("--scale makes a side of " + std::to_string(long(v)) + " pixels; at most " +
+                             std::to_string(Limits::max_image_side));
+        return int(v);
+    };
+    if (size.width > 0 && size.height > 0) {
+        camera.width = size.width;
+        camera.height = size.height;
+    } else if (size.scale > 0) {
+        camera.width = side(camera.width);
+        camera.height = side(camera.height);
+    }
+}
+
 Job load_job(const JobRequest& request) {
     Job job;
     job.file = request.file;
@@ -50,6 +70,7 @@ Job load_job(const JobRequest& request) {
                              request.movie_camera_note + ")");
         job.movie = load_movie(job.file);
         job.frame = request.frame ? parse_int(*request.frame, "--frame", 0, job.movie.frame_count() - 1) : 0;
+        resize_camera(job.movie.camera, request.size);
         job.warnings = job.movie.warnings;
         if (request.check_cameras)
             for (std::string& w : check_movie_cameras(job.file, job.movie)) job.warnings.push_back(std::move(w));
@@ -65,6 +86,7 @@ Job load_job(const JobRequest& request) {
     job.movie.scene = std::move(scene_file.scene);
     job.movie.settings = scene_file.settings;
     job.warnings = std::move(scene_file.warnings);
+    for (Camera& c : job.movie.scene.cameras) resize_camera(c, request.size);
     if (request.camera) job.camera_index = camera_index(job.movie.scene, *request.camera, job.file);
     job.camera = job.movie.scene.cameras[size_t(job.camera_index)];
     job.movie.camera = job.camera;

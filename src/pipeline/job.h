@@ -11,10 +11,19 @@
 
 namespace fh {
 
+// A size that replaces the file's (--resolution WxH), or a factor on it
+// (--scale F), for every camera of the job: frames rendered at an override
+// are still a pure function of their index.
+struct SizeOverride {
+    int width = 0, height = 0;  // both > 0: this size
+    double scale = 0;           // > 0: the file's sides times this, rounded, at least 1
+};
+
 struct JobRequest {
     std::string file;
     std::optional<std::string> camera;  // scene files only: a camera's name
     std::optional<std::string> frame;   // movie files only: the frame, as typed (default 0)
+    SizeOverride size;
     // Check the movie's camera at every frame now (check_movie_cameras);
     // `frames` does it itself, after its own flags are checked.
     bool check_cameras = true;
@@ -44,6 +53,10 @@ struct Job {
 // flag that does not fit the file (--camera on a movie, --frame on a scene,
 // an unknown camera, a frame out of range) throws UsageError.
 Job load_job(const JobRequest& request);
+
+// The camera resized as `size` says; UsageError when a side would pass
+// Limits::max_image_side.
+void resize_camera(Camera& camera, const SizeOverride& size);
 
 // A movie's paths checked at every frame (check_animations): a value its
 // property does not allow, a zero or non-finite view direction, throws

@@ -35,6 +35,26 @@ TEST(FrameSelection, ParsesAndRejects) {
     EXPECT_THROW(select_frames(300, FrameRange{0, 301}, std::nullopt), std::invalid_argument);
 }
 
+// A-B includes B, as POV-Ray's +SF/+EF and Blender's -s/-e do; A: and A- run
+// to the end, whatever the movie's length.
+TEST(FrameSelection, InclusiveAndOpenRanges) {
+    EXPECT_EQ(parse_range("5-8").begin, 5);
+    EXPECT_EQ(parse_range("5-8").end, 9);
+    EXPECT_EQ(parse_range("5-5").end, 6);
+    EXPECT_EQ(parse_range("5:").end, -1);
+    EXPECT_EQ(parse_range("5-").end, -1);
+    for (const char* bad : {"8-5", "5--8", "-", ":", "5-x"})
+        EXPECT_THROW(parse_range(bad), std::invalid_argument) << bad;
+    EXPECT_EQ(select_frames(10, parse_range("7:"), std::nullopt), (std::vector<int>{7, 8, 9}));
+    EXPECT_EQ(select_frames(10, parse_range("7-9"), std::nullopt), (std::vector<int>{7, 8, 9}));
+    try {
+        select_frames(10, parse_range("10:"), std::nullopt);
+        FAIL() << "a range starting past the end was accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "frame 10 is past the movie's end: its 10 frames are 0 to 9");
+    }
+}
+
 TEST(FrameSelection, FileNamesArePaddedToFourDigitsOrMore) {
     EXPECT_EQ(frame_file_name(0, 300), "frame_0000.png");
     EXPECT_EQ(frame_file_name(42, 300), "frame_0042.png");

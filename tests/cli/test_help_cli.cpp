@@ -1,0 +1,116 @@
+// One source of truth for help: every flag of the flag table appears in
+// `firsthit --help` and in the README's command-line section (whose synopsis
+// is the help's own), every command's help lists each flag it takes, and
+// Args::parse takes exactly those.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli/args.h"
+#include "cli/flags.h"
+#include "cli/run_command.h"
+#include "io/input_error.h"
+
+namespace fh::test {
+namespace {
+
+// The README's "## Command line" section, up to the next "## ".
+std::string readme_command_line() {
+    const std::string readme = slurp(source_path("README.md"));
+    const size_t start = readme.find("\n## Command line\n");
+    EXPECT_NE(start, std::string::npos) << "README.md has no '## Command line' section";
+    if (start == std::string::npos) return "";
+    return readme.substr(start, readme.find("\n## ", start + 1) - start);
+}
+
+TEST(HelpCli, EveryFlagIsInTheTopLevelHelpAndTheReadme) {
+    const auto help = run_firsthit("--help");
+    ASSERT_EQ(help.status, 0);
+    const std::string readme = readme_command_line();
+    for (const Flag& f : all_flags()) {
+        for (std::string_view name : {f.name, f.alias}) {
+            if (name.empty()) continue;
+            EXPECT_NE(help.out.find(std::string(name)), std::string::npos) << name << " is not in firsthit --help";
+            EXPECT_NE(readme.find(std::string(name)), std::string::npos) << name << " is not in the README's command line";
+        }
+        EXPECT_NE(help.out.find(std::string(f.help.substr(0, 20))), std::string::npos) << f.name << "'s help text";
+    }
+    for (const CommandSpec& c : all_commands())
+        EXPECT_NE(readme.find("firsthit " + std::string(c.name)), std::string::npos) << c.name;
+}
+
+TEST(HelpCli, TheReadmeSynopsisIsTheHelpsOwn) {
+    const auto help = run_firsthit("--help");
+    const std::string usage = help.out.substr(help.out.find("usage:\n") + 7,
+                                              help.out.find("\n\ncommands:") - help.out.find("usage:\n") - 7);
+    std::string unindented;
+    for (size_t at = 0; at < usage.size();) {
+        const size_t end = std::min(usage.find('\n', at), usage.size());
+        unindented += usage.substr(at + 2, end - at - 2) + "\n";
+        at = end + 1;
+    }
+    EXPECT_NE(readme_command_line().find("```\n" + unindented + "```"), std::string::npos)
+        << "the README's synopsis differs from firsthit --help's; paste this:\n" << unindented;
+}
+
+TEST(HelpCli, EachCommandsHelpListsItsFlagsAndOnlyThose) {
+    for (const CommandSpec& c : all_commands()) {
+        const auto r = run_firsthit(std::string(c.name) + " --help");
+        ASSERT_EQ(r.status, 0) << c.name;
+        EXPECT_EQ(r.out.rfind("usage: firsthit " + std::string(c.name), 0), 0u) << r.out;
+        for (const Flag& f : all_flags()) {
+            const bool takes = std::find(c.flags.begin(), c.flags.end(), f.name) != c.flags.end();
+            if (f.name == "--help") continue;
+            EXPECT_EQ(r.out.find("  " + std::string(f.alias.empty() ? f.name : f.alias)) != std::string::npos, takes)
+                << c.name << " --help and " << f.name;
+        }
+    }
+}
+
+TEST(HelpCli, ParseTakesTheTablesFlagsAndPointsElsewhereForOthers) {
+    const CommandSpec& render = *find_command("render");
+    const Args a = Args::parse(render, {"scene.yaml", "-o", "x.png", "--resolution=160x120", "--stats"});
+    EXPECT_EQ(a.positional(), std::vector<std::string>{"scene.yaml"});
+    EXPECT_EQ(a.value("--output"), "x.png");  // under the flag's name, typed as its alias
+    EXPECT_EQ(a.value("--resolution"), "160x120");
+    EXPECT_TRUE(a.has("--stats"));
+    auto message = [&](const std::vector<std::string>& words) {
+        try {
+            Args::parse(render, words);
+        } catch (const UsageError& e) {
+            return std::string(e.what());
+        }
+        return std::string("(accepted)");
+    };
+    EXPECT_EQ(message({"f.yaml", "--range", "1-3"}),
+              "'render' has no option '--range': render draws one frame; for several use 'firsthit frames MOVIE "
+              "--range A-B'");
+    EXPECT_EQ(message({"f.yaml", "--width", "100"}),
+              "'render' has no option '--width': set the image size with --resolution WxH (e.g. 160x120) or --scale F");
+    EXPECT_EQ(message({"f.yaml", "--sppp", "4"}),
+              "unknown option '--sppp' for 'render' (did you mean '--spp'?); see 'firsthit render --help'");
+    EXPECT_EQ(message({"f.yaml", "--spp"}), "option '--spp' needs a value (N)");
+    EXPECT_EQ(message({"f.yaml", "--stats=1"}), "option '--stats' takes no value");
+}
+
+TEST(HelpCli, AccuracyHelpExplainsEveryColumn) {
+    const std::string dir = fresh_dir("accuracy_columns").string();
+    const auto table = run_firsthit("accuracy " + source_path("animations/scene.yaml") +
+                                    " --resolution 8x8 --reference-spp 2 --max-spp 2 --runs 1 --csv " + dir + "/a.csv");
+    ASSERT_EQ(table.status, 0) << table.err;
+    const std::string csv = slurp(dir + "/a.csv");
+    const std::string header = csv.substr(0, csv.find('\n'));
+    const std::string help = run_firsthit("accuracy --help").out;
+    size_t columns = 0;
+    for (size_t at = 0; at <= header.size(); ++columns) {
+        const size_t end = std::min(header.find(',', at), header.size());
+        const std::string column = header.substr(at, end - at);
+        EXPECT_NE(help.find("  " + column + " "), std::string::npos) << column << " is not explained";
+        at = end + 1;
+    }
+    EXPECT_EQ(columns, 13u);
+    EXPECT_NE(help.find("Which setting for which purpose"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fh::test
