@@ -10,9 +10,11 @@
 # is written under a temporary name in OUT's folder and renamed, so it is
 # whole or absent.
 #
-#   scripts/encode.sh FRAMES_DIR OUT [--movie MOVIE.yaml] [--fps F] [--threads N]
-#       a folder of frame_0000.png, frame_0001.png, ...: frames 0 to n-1,
-#       all with the same zero padding (a gap is refused)
+#   scripts/encode.sh FRAMES OUT [--movie MOVIE.yaml] [--fps F] [--threads N]
+#       FRAMES is what `firsthit frames --out` was given: a folder of
+#       frame_0000.png, frame_0001.png, ..., or a pattern such as
+#       'shots/take1_%04d.png' or 'shots/take1_####.png'. The frames must be
+#       0 to n-1, all with the same zero padding (a gap is refused).
 #   scripts/encode.sh --raw WIDTHxHEIGHT OUT [--movie MOVIE.yaml] [--fps F] [--threads N] [--pix-fmt P]
 #       raw frames on standard input, as `firsthit frames --raw-video -`
 #       writes them while it renders: the encoder then runs beside the
@@ -24,11 +26,13 @@
 #   --fps F              given explicitly: it always wins
 #   --movie MOVIE.yaml   the movie's fps, from `firsthit info MOVIE` (FIRSTHIT
 #                        names the binary; default: build/firsthit)
-#   FRAMES_DIR/movie.txt the movie's `key: value` lines beside its frames
-#                        (at least `fps: F` and `frames: N`); not read when
+#   PREFIXmovie.txt      the movie's `key: value` lines that `firsthit frames`
+#                        writes beside its frames (frame_movie.txt beside
+#                        frame_NNNN.png, take1_movie.txt beside take1_NNNN.png;
+#                        at least `fps: F` and `frames: N`); not read when
 #                        --movie is given
 #   30, with a warning on standard error.
-# When the movie's frame count is known (from --movie, or else movie.txt), a
+# When the movie's frame count is known (from --movie, or else PREFIXmovie.txt), a
 # folder must hold exactly its frames: frames past the movie's end (left by
 # an earlier, longer render) are refused, and so are missing last frames
 # (render them with `firsthit frames MOVIE --resume`). Refused means exit 2,
@@ -43,7 +47,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 
 die() { echo "encode.sh: error: $*" >&2; exit 2; }
-usage="usage: scripts/encode.sh FRAMES_DIR OUT.(mp4|webm|gif|mov) [--movie MOVIE.yaml] [--fps F] [--threads N]  |  scripts/encode.sh --raw WxH OUT.(mp4|webm|gif|mov) [--movie MOVIE.yaml] [--fps F] [--threads N] [--pix-fmt rgb24|yuv420p]"
+usage="usage: scripts/encode.sh FRAMES_DIR|PATTERN OUT.(mp4|webm|gif|mov) [--movie MOVIE.yaml] [--fps F] [--threads N]  |  scripts/encode.sh --raw WxH OUT.(mp4|webm|gif|mov) [--movie MOVIE.yaml] [--fps F] [--threads N] [--pix-fmt rgb24|yuv420p]"
 supported=".mp4 (H.264), .webm (VP9), .gif, .mov (H.264)"
 # A number > 0, as ffmpeg's -framerate takes it (30, 29.97).
 is_fps() { [[ $1 =~ ^[0-9]+([.][0-9]+)?$ ]] && awk "BEGIN{exit !($1 > 0)}"; }
@@ -78,8 +82,18 @@ if [[ -n $raw_size ]]; then
   dir='' out=${positional[0]}
 else
   [[ ${#positional[@]} -eq 2 ]] || die "$usage"
-  dir=${positional[0]} out=${positional[1]}
+  frames_arg=${positional[0]} out=${positional[1]}
   [[ -z $raw_pix_fmt ]] || die "--pix-fmt is for --raw frames (frame files are PNG)"
+  # A folder of frame_NNNN.png, or a pattern: PREFIX %0Nd|%d|#### SUFFIX.
+  dir=$frames_arg prefix=frame_ suffix=.png
+  base=${frames_arg##*/}
+  if [[ $base =~ ^(.*)(%0?[0-9]*d|#+)(.*)$ ]]; then
+    prefix=${BASH_REMATCH[1]} suffix=${BASH_REMATCH[3]}
+    [[ $prefix != *[%#]* && $suffix != *[%#]* ]] || die "$frames_arg has two frame numbers; give one (%04d or ####)"
+    [[ $frames_arg == */* ]] && dir=${frames_arg%/*} || dir=.
+    [[ -n $dir ]] || dir=/
+  fi
+  sidecar_file=$dir/${prefix}movie.txt
 fi
 raw_pix_fmt=${raw_pix_fmt:-rgb24}
 
@@ -109,9 +123,9 @@ if [[ -n $movie ]]; then
   info=$("$firsthit" info "$movie") || exit 2  # firsthit said why, in one line
   movie_fps=$(value_of fps <<<"$info") count=$(value_of frames <<<"$info") count_from=$movie
   [[ -n $movie_fps ]] || die "--movie $movie: not a movie file (a scene has no fps)"
-elif [[ -z $raw_size && -f $dir/movie.txt ]]; then
-  sidecar=$(<"$dir/movie.txt")
-  movie_fps=$(value_of fps <<<"$sidecar") count=$(value_of frames <<<"$sidecar") count_from=$dir/movie.txt
+elif [[ -z $raw_size && -f $sidecar_file ]]; then
+  sidecar=$(<"$sidecar_file")
+  movie_fps=$(value_of fps <<<"$sidecar") count=$(value_of frames <<<"$sidecar") count_from=$sidecar_file
 fi
 if [[ -n $count_from ]]; then
   is_fps "$movie_fps" || die "$count_from: expected a line 'fps: F' with F a number > 0, got '$movie_fps'"
@@ -120,7 +134,7 @@ fi
 fps_warning=
 if [[ -z $fps ]]; then
   fps=${movie_fps:-30}
-  [[ -n $movie_fps ]] || fps_warning="no fps given${dir:+ and $dir has no movie.txt}: encoding at 30 fps; pass --movie MOVIE.yaml (the movie's fps) or --fps F"
+  [[ -n $movie_fps ]] || fps_warning="no fps given${dir:+ and there is no $sidecar_file}: encoding at 30 fps; pass --movie MOVIE.yaml (the movie's fps) or --fps F"
 fi
 
 if [[ -n $raw_size ]]; then
@@ -129,35 +143,40 @@ if [[ -n $raw_size ]]; then
   width=${raw_size%x*} height=${raw_size#*x}
 else
   [[ -d $dir ]] || die "no such folder: $dir"
-  frames=()
-  for f in "$dir"/frame_*.png; do  # in order: the glob sorts
-    f=${f##*/}
-    if [[ $f =~ ^frame_[0-9]+\.png$ ]]; then frames+=("$f"); fi
+  # The frame files by number: PREFIX DIGITS SUFFIX.
+  declare -A by_index=()
+  n=0 digits='' extra='' extra_index=''
+  for path in "$dir/$prefix"*"$suffix"; do
+    [[ -f $path ]] || continue
+    f=${path##*/} number=${f#"$prefix"}
+    number=${number%"$suffix"}
+    [[ $number =~ ^[0-9]+$ && ${#number} -le 9 ]] || continue
+    i=$((10#$number))
+    by_index[$i]=$f
+    n=$((n + 1))
+    # No frame past the movie's end: stale frames of an earlier, longer
+    # render would play on after it.
+    if [[ -n $count ]] && ((i >= count)) && [[ -z $extra || $i -lt $extra_index ]]; then extra=$f extra_index=$i; fi
   done
-  n=${#frames[@]}
-  [[ $n -gt 0 ]] || die "$dir holds no frames (frame_0000.png, ...)"
-  digits=$(( ${#frames[0]} - 10 ))  # "frame_" + digits + ".png"
-  # No frame past the movie's end: stale frames of an earlier, longer render
-  # would play on after it.
-  if [[ -n $count ]]; then
-    extra='' extra_index=''
-    for f in "${frames[@]}"; do
-      i=$((10#${f:6:${#f}-10}))
-      if ((i >= count)) && [[ -z $extra || $i -lt $extra_index ]]; then extra=$f extra_index=$i; fi
-    done
-    [[ -z $extra ]] || die "$dir holds frames past the movie's end ($count frames, from $count_from): $extra is the first; remove them, or render into a fresh folder"
-  fi
-  # The frames must be frame_0..frame_{n-1}, all with the same zero padding.
+  [[ $n -gt 0 ]] || die "$frames_arg holds no frames (${prefix}0000${suffix}, ...)"
+  [[ -z $extra ]] || die "$frames_arg holds frames past the movie's end ($count frames, from $count_from): $extra is the first; remove them, or render into a fresh folder (firsthit frames --clean)"
+  [[ -n ${by_index[0]:-} ]] || die "$frames_arg has no frame 0 (${prefix}0000${suffix})"
+  first=${by_index[0]}
+  digits=$(( ${#first} - ${#prefix} - ${#suffix} ))
+  name_of() { printf "%s%0${digits}d%s" "$prefix" "$1" "$suffix"; }
+  # The frames must be 0..n-1, all with the same zero padding.
   for ((i = 0; i < n; i++)); do
-    want=$(printf "frame_%0${digits}d.png" "$i")
-    [[ ${frames[$i]} == "$want" ]] || die "$dir has a gap or stray frame: expected $want, found ${frames[$i]} (render the missing frames with 'firsthit frames MOVIE --resume')"
+    want=$(name_of "$i")
+    [[ ${by_index[$i]:-} == "$want" ]] || die "$frames_arg has a gap or stray frame: expected $want, found ${by_index[$i]:-nothing} (render the missing frames with 'firsthit frames MOVIE --resume')"
   done
   if [[ -n $count ]] && ((n < count)); then
-    missing="$(printf "frame_%0${digits}d.png" "$n") is"
-    ((n == count - 1)) || missing="$(printf "frame_%0${digits}d.png" "$n") to $(printf "frame_%0${digits}d.png" $((count - 1))) are"
-    die "$dir holds $n of the movie's $count frames (from $count_from): $missing missing (render the missing frames with 'firsthit frames MOVIE --resume')"
+    missing="$(name_of "$n") is"
+    ((n == count - 1)) || missing="$(name_of "$n") to $(name_of $((count - 1))) are"
+    die "$frames_arg holds $n of the movie's $count frames (from $count_from): $missing missing (render the missing frames with 'firsthit frames MOVIE --resume')"
   fi
-  input=(-framerate "$fps" -i "$dir/frame_%0${digits}d.png")
+  frames=("$first")
+  # ffmpeg reads the frames by its own pattern: a '%' in the name is '%%'.
+  input=(-framerate "$fps" -i "$dir/${prefix//%/%%}%0${digits}d${suffix//%/%%}")
   what="$n frames"
   # The size, from the first frame's IHDR chunk (bytes 16-23, big-endian).
   read -r width height < <(od -An -tu1 -j16 -N8 "$dir/${frames[0]}" |

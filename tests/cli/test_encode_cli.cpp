@@ -1,6 +1,6 @@
 // scripts/encode.sh as a POV-Ray or Blender user drives it: the format from
 // OUT's extension (.mp4, .webm, .gif, .mov; others refused), the fps from
-// --movie or the frames' movie.txt (--fps wins, else 30 with a warning), and
+// --movie or the frames' PREFIXmovie.txt (--fps wins, else 30 with a warning), and
 // the folder checked against the movie's frame count. Tiny movies (64 x 64,
 // one second) made from the report's scene; the videos checked with ffprobe.
 #include <gtest/gtest.h>
@@ -145,7 +145,7 @@ TEST(EncodeCli, TheFpsComesFromTheMovieAndFpsWins) {
 TEST(EncodeCli, WithoutMovieOrFpsItWarnsAndTakes30) {
     const fs::path dir = tiny_movie("encode_default_fps");
     const fs::path frames = render_frames(dir);
-    fs::remove(frames / "movie.txt");  // the movie's lines, should `frames` leave them: not here
+    fs::remove(frames / "frame_movie.txt");  // the movie's lines `frames` leaves: not here
     const auto r = encode(frames.string() + " " + (dir / "d.mp4").string());
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(frame_rate(dir / "d.mp4"), "r_frame_rate=30/1\n");
@@ -155,10 +155,10 @@ TEST(EncodeCli, WithoutMovieOrFpsItWarnsAndTakes30) {
         EXPECT_NE(r.err.find(words), std::string::npos) << words << " in " << r.err;
 }
 
-TEST(EncodeCli, TheFramesMovieTxtGivesTheFpsAndTheFrameCount) {
+TEST(EncodeCli, TheFramesMovieFileGivesTheFpsAndTheFrameCount) {
     const fs::path dir = tiny_movie("encode_sidecar");  // 12 frames
     const fs::path frames = render_frames(dir);
-    std::ofstream(frames / "movie.txt") << "movie: tiny.yaml\nfps: 8\nframes: 12\n";
+    std::ofstream(frames / "frame_movie.txt") << "movie: tiny.yaml\nfps: 8\nframes: 12\n";
     auto r = encode(frames.string() + " " + (dir / "s.webm").string());
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err, "");
@@ -168,21 +168,21 @@ TEST(EncodeCli, TheFramesMovieTxtGivesTheFpsAndTheFrameCount) {
     EXPECT_EQ(frame_rate(dir / "s5.mp4"), "r_frame_rate=5/1\n");
 
     // Its frame count is checked, as the movie's.
-    std::ofstream(frames / "movie.txt") << "fps: 8\nframes: 10\n";
+    std::ofstream(frames / "frame_movie.txt") << "fps: 8\nframes: 10\n";
     r = encode(frames.string() + " " + (dir / "x.mp4").string());
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err, "encode.sh: error: " + frames.string() + " holds frames past the movie's end (10 frames, from " +
-                         (frames / "movie.txt").string() +
-                         "): frame_0010.png is the first; remove them, or render into a fresh folder\n");
-    std::ofstream(frames / "movie.txt") << "fps: 8\nframes: 14\n";
+                         (frames / "frame_movie.txt").string() +
+                         "): frame_0010.png is the first; remove them, or render into a fresh folder (firsthit frames --clean)\n");
+    std::ofstream(frames / "frame_movie.txt") << "fps: 8\nframes: 14\n";
     r = encode(frames.string() + " " + (dir / "x.mp4").string() + " --fps 8");
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err, "encode.sh: error: " + frames.string() + " holds 12 of the movie's 14 frames (from " +
-                         (frames / "movie.txt").string() +
+                         (frames / "frame_movie.txt").string() +
                          "): frame_0012.png to frame_0013.png are missing (render the missing frames with "
                          "'firsthit frames MOVIE --resume')\n");
     // A movie.txt without its numbers is refused, not guessed around.
-    std::ofstream(frames / "movie.txt") << "fps: 8\n";
+    std::ofstream(frames / "frame_movie.txt") << "fps: 8\n";
     r = encode(frames.string() + " " + (dir / "x.mp4").string());
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("'frames: N'"), std::string::npos) << r.err;
@@ -200,7 +200,7 @@ TEST(EncodeCli, FramesBeyondTheMoviesEndAreRefused) {
         const auto r = encode(frames.string() + " " + (dir / name).string() + " --movie " + movie);
         EXPECT_EQ(r.status, 2) << name;
         EXPECT_EQ(r.err, "encode.sh: error: " + frames.string() + " holds frames past the movie's end (12 frames, from " +
-                             movie + "): frame_0012.png is the first; remove them, or render into a fresh folder\n")
+                             movie + "): frame_0012.png is the first; remove them, or render into a fresh folder (firsthit frames --clean)\n")
             << name;
     }
     EXPECT_EQ(files_in(dir), (std::vector<std::string>{"f", "scene.yaml", "tiny.yaml"}));  // nothing written
