@@ -115,7 +115,7 @@ outdir=$(dirname -- "$out")
 [[ -z $fps ]] || is_fps "$fps" || die "--fps must be a number > 0, got '$fps'"
 command -v ffmpeg >/dev/null || die "ffmpeg not found; install it with: apt-get install ffmpeg"
 
-# The movie's fps and frame count: from --movie, or else the frames' movie.txt.
+# The movie's fps and frame count: from --movie, or else the frames' PREFIXmovie.txt.
 movie_fps='' count='' count_from=''
 if [[ -n $movie ]]; then
   firsthit=${FIRSTHIT:-$here/../build/firsthit}

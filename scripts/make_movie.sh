@@ -2,7 +2,8 @@
 # Renders a movie's frames and encodes them: the steps of `make movies`.
 #
 #   scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR] [--encoder-threads N] [--raw-pix-fmt P] [--quiet]
-# leaves OUTPUT_DIR/NAME/frame_*.png and OUTPUT_DIR/NAME.mp4, NAME the movie
+# leaves OUTPUT_DIR/NAME/frame_*.png and OUTPUT_DIR/NAME.mp4 (OUTPUT_DIR: output/ in
+# the current folder, not the script's), NAME the movie
 # file's name without .yaml. FIRSTHIT names the binary (default: build/firsthit).
 #   --encoder-threads N   x264's threads (encode.sh --threads); default: all cores
 #   --raw-pix-fmt P       the streamed frames' pixels: rgb24 (default) or
@@ -31,7 +32,7 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 [[ ${#positional[@]} -ge 1 && ${#positional[@]} -le 2 ]] || { echo "$usage" >&2; exit 2; }
-movie=${positional[0]} outdir=${positional[1]:-$here/../output}
+movie=${positional[0]} outdir=${positional[1]:-output}
 name=$(basename "$movie" .yaml)
 info=$("$firsthit" info "$movie")
 fps=$(sed -n 's/^fps: //p' <<<"$info")

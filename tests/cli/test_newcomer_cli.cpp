@@ -247,5 +247,17 @@ TEST(NewcomerCli, StatsNeverContradictThemselves) {
     EXPECT_GT(std::stoi(m[1]), 0);
 }
 
+// Without an output folder, make_movie.sh writes into output/ of the folder
+// it is run from, never into the checkout it lives in.
+TEST(NewcomerCli, MakeMovieWritesWhereItIsRun) {
+    const fs::path dir = tiny("make_movie_here");
+    const auto r = run_shell("cd " + q(dir) + " && FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " +
+                             source_path("scripts/make_movie.sh") + " tiny.yaml --quiet");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "output/tiny.mp4"));
+    EXPECT_EQ(frame_files(dir / "output/tiny").size(), 12u);
+    EXPECT_EQ(r.out, "tiny: rendered and encoded into output/tiny.mp4 in " + r.out.substr(r.out.rfind(" in ") + 4));
+}
+
 }  // namespace
 }  // namespace fh::test
