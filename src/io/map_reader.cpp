@@ -5,6 +5,26 @@
 
 namespace fh {
 
+namespace {
+
+// The end of the message for an unknown key. In a flow map, "{radius:1}"
+// (no space after the colon) and "{radius 1}" (no colon) are keys with no
+// value; say so rather than suggest the key the name is close to.
+std::string unknown_key_hint(const std::string& name, const std::vector<std::string>& allowed) {
+    const std::size_t colon = name.find(':');
+    if (colon != std::string::npos && colon > 0 && colon + 1 < name.size() && name[colon + 1] != ' ')
+        return " (a missing space after the colon? write '" + name.substr(0, colon + 1) + " " +
+               name.substr(colon + 1) + "')";
+    const std::size_t space = name.find(' ');
+    const std::size_t value = space == std::string::npos ? space : name.find_first_not_of(' ', space);
+    if (value != std::string::npos && std::find(allowed.begin(), allowed.end(), name.substr(0, space)) != allowed.end())
+        return " (a missing colon? write '" + name.substr(0, space) + ": " + name.substr(value) + "')";
+    const std::string hint = closest_match(name, allowed);
+    return hint.empty() ? "" : " (did you mean '" + hint + "'?)";
+}
+
+}  // namespace
+
 MapReader::MapReader(const YamlReader& reader, const YAML::Node& map, std::string what,
                      const std::vector<std::string>& allowed)
     : reader_(reader), map_(map), what_(std::move(what)) {
@@ -20,11 +40,8 @@ MapReader::MapReader(const YamlReader& reader, const YAML::Node& map, std::strin
         // yaml-cpp keeps both copies of a repeated key and lookups see the first:
         // a repeated key is almost surely a mistake.
         if (!seen.insert(name).second) reader_.fail(key, "duplicate key '" + name + "' in " + what_);
-        if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
-            const std::string hint = closest_match(name, allowed);
-            reader_.fail(key, "unknown key '" + name + "' in " + what_ +
-                                  (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
-        }
+        if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), name) == allowed.end())
+            reader_.fail(key, "unknown key '" + name + "' in " + what_ + unknown_key_hint(name, allowed));
         entries_.push_back({key.Scalar(), key, it->second});
     }
 }

@@ -11,6 +11,8 @@
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/parser.h>
 
+#include "io/yaml_hints.h"
+
 namespace fh {
 
 namespace {
@@ -106,6 +108,26 @@ private:
     YAML::Mark document_start_ = YAML::Mark::null_mark();
 };
 
+// " (HINT)" when io/yaml_hints.h finds a common mistake behind yaml-cpp's
+// error `yaml_message` at `mark` of `text`, else "": yaml-cpp's words ("end of
+// map not found") rarely name the cause (a tab, a missing colon, ...).
+std::string hint_for(const std::string& text, const YAML::Mark& mark, const std::string& yaml_message) {
+    const std::string hint = mark.is_null() ? yaml_hint(text, 0, 0, yaml_message)
+                                            : yaml_hint(text, mark.line + 1, mark.column + 1, yaml_message);
+    return hint.empty() ? "" : " (" + hint + ")";
+}
+
+// A yaml-cpp exception as bad input at its position; with the file's `text`
+// at hand, a hint is added where one is found.
+InputError yaml_error(const std::string& file, const YAML::Exception& e, const std::string* text) {
+    // yaml-cpp's depth guard says "bad file"; say what is wrong instead.
+    const bool too_deep = dynamic_cast<const YAML::DeepRecursion*>(&e) != nullptr;
+    std::string message = "invalid yaml: " + (too_deep ? std::string("nested too deeply") : e.msg);
+    if (text && !too_deep) message += hint_for(*text, e.mark, e.msg);
+    if (e.mark.is_null()) return InputError(file, message);
+    return InputError(file, e.mark.line + 1, e.mark.column + 1, message);
+}
+
 // Runs the parser over the text once before any node is built: refuses deep
 // nesting (above) and a second document. This also guards against a bug of
 // yaml-cpp 0.7 (jbeder/yaml-cpp#1040, fixed upstream in 2024 by #1319): a
@@ -124,8 +146,10 @@ void check_structure(const std::string& file, const std::string& text) {
     const std::string c = char_at(text, second);
     const bool stuck = second.pos == first.pos;  // nothing consumed: the bug above
     const bool cannot_start = c == "," || c == "]" || c == "}";
-    const std::string message = (stuck || cannot_start) ? "invalid yaml: unexpected '" + c + "'"
-                                                        : "expected a single yaml document";
+    const std::string unexpected = "unexpected '" + c + "'";
+    const std::string message = (stuck || cannot_start)
+                                    ? "invalid yaml: " + unexpected + hint_for(text, second, unexpected)
+                                    : "expected a single yaml document";
     if (second.is_null()) throw InputError(file, message);
     throw InputError(file, second.line + 1, second.column + 1, message);
 }
@@ -141,7 +165,7 @@ YAML::Node YamlReader::parse_map(const std::string& text, const std::string& wha
         check_structure(file_, text);  // first: nesting, at most one document
         root = YAML::Load(text);
     } catch (const YAML::Exception& e) {
-        throw to_input_error(file_, e);
+        throw yaml_error(file_, e, &text);
     }
     if (root.IsNull()) throw InputError(file_, "empty " + what + " file");
     if (!root.IsMap()) fail(root, "expected a map at the top level, " + got(root));
@@ -260,12 +284,6 @@ std::string got(const YAML::Node& node) {
     return "got nothing";
 }
 
-InputError to_input_error(const std::string& file, const YAML::Exception& e) {
-    // yaml-cpp's depth guard says "bad file"; say what is wrong instead.
-    const bool too_deep = dynamic_cast<const YAML::DeepRecursion*>(&e) != nullptr;
-    const std::string message = "invalid yaml: " + (too_deep ? std::string("nested too deeply") : e.msg);
-    if (e.mark.is_null()) return InputError(file, message);
-    return InputError(file, e.mark.line + 1, e.mark.column + 1, message);
-}
+InputError to_input_error(const std::string& file, const YAML::Exception& e) { return yaml_error(file, e, nullptr); }
 
 }  // namespace fh

@@ -90,7 +90,8 @@ std::string frames(const std::string& file, const std::string& extra = "") {
 TEST(BadInputCli, SceneFileMistakes) {
     const Case cases[] = {
         {"syntax", {{"bad.yaml", "surfaces: [{type: sphere\n"}}, render("bad.yaml"),
-         "DIR/bad.yaml:2:1: error: invalid yaml: end of map flow not found"},
+         "DIR/bad.yaml:2:1: error: invalid yaml: end of map flow not found (the '{' at line 1, column 12 is never "
+         "closed)"},
         {"wrong_type", {scene_with("radius: 1", "radius: big")}, render("bad.yaml"),
          "DIR/bad.yaml:4:47: error: expected a number for 'radius', got 'big'"},
         {"missing_key", {scene_with("radius: 1, ", "")}, render("bad.yaml"),
@@ -156,7 +157,8 @@ TEST(BadInputCli, WholeFileMistakes) {
         {"frames_of_binary", {{"bad.yaml", std::string("\0\1\2", 3)}}, frames("bad.yaml"),
          "DIR/bad.yaml:1:1: error: binary data, not text: control byte 0x00 (scene and movie files are UTF-8 text)"},
         {"frames_of_movie_with_syntax_error", {{"bad.yaml", "scene: scene.yaml\nfps: [30\n"}}, frames("bad.yaml"),
-         "DIR/bad.yaml:3:1: error: invalid yaml: end of sequence flow not found"},
+         "DIR/bad.yaml:3:1: error: invalid yaml: end of sequence flow not found (the '[' at line 2, column 6 is "
+         "never closed)"},
         {"frames_of_a_scene", {}, frames("scene.yaml"),
          "firsthit: error: DIR/scene.yaml is not a movie file (a movie file has a 'scene:' key)"},
     };
@@ -217,13 +219,13 @@ TEST(BadInputCli, OutputThatCannotBeWritten) {
 TEST(BadInputCli, FrameSelectionsOutOfBoundsOrMalformed) {
     const Case cases[] = {
         {"range_past_end", {}, frames("movie.yaml", "--range 0:13"),
-         "firsthit: error: --range 0:13 reaches past the movie's 12 frames"},
+         "firsthit: error: --range 0:13: frame 12 is past the movie's end: its 12 frames are 0 to 11"},
         {"range_start_past_end", {}, frames("movie.yaml", "--range 20:30"),
-         "firsthit: error: --range 20:30 reaches past the movie's 12 frames"},
+         "firsthit: error: --range 20:30: frame 20 is past the movie's end: its 12 frames are 0 to 11"},
         {"range_empty", {}, frames("movie.yaml", "--range 5:3"),
-         "firsthit: error: --range 5:3 is empty: A must be less than B"},
+         "firsthit: error: --range 5:3 is empty: A:B needs A < B (B is not rendered)"},
         {"range_no_colon", {}, frames("movie.yaml", "--range 3"),
-         "firsthit: error: --range must look like A:B (frames A to B-1), got '3'"},
+         "firsthit: error: --range must look like A-B (frames A to B), A:B (A to B-1) or A: (A to the end), got '3'"},
         {"range_words", {}, frames("movie.yaml", "--range a:b"),
          "firsthit: error: --range start: 'a' is not a whole number >= 0"},
         {"range_negative", {}, frames("movie.yaml", "--range -1:4"),
@@ -247,7 +249,7 @@ TEST(BadInputCli, FrameSelectionsOutOfBoundsOrMalformed) {
         {"frame_of_a_scene", {}, render("scene.yaml", "--frame 1"),
          "firsthit: error: --frame applies to movie files; DIR/scene.yaml is a scene"},
         {"range_missing_value", {}, "frames DIR/movie.yaml --out DIR/out --range",
-         "firsthit: error: option '--range' needs a value"},
+         "firsthit: error: option '--range' needs a value (R)"},
     };
     for (const Case& c : cases) check(c);
 }

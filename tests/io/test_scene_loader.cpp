@@ -143,7 +143,7 @@ TEST(SceneLoader, MissingFile) {
 
 TEST(SceneLoader, YamlSyntaxError) {
     EXPECT_EQ(scene_error(kCamera + "surfaces: [{type: sphere\n"),
-              "FILE:5:1: error: invalid yaml: end of map flow not found");
+              "FILE:5:1: error: invalid yaml: end of map flow not found (the '{' at line 4, column 12 is never closed)");
 }
 
 TEST(SceneLoader, EmptyFile) {
