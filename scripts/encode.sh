@@ -165,9 +165,10 @@ else
   digits=$(( ${#first} - ${#prefix} - ${#suffix} ))
   name_of() { printf "%s%0${digits}d%s" "$prefix" "$1" "$suffix"; }
   # The frames must be 0..n-1, all with the same zero padding.
+  mapfile -t sorted < <(printf '%s\n' "${!by_index[@]}" | sort -n)
   for ((i = 0; i < n; i++)); do
-    want=$(name_of "$i")
-    [[ ${by_index[$i]:-} == "$want" ]] || die "$frames_arg has a gap or stray frame: expected $want, found ${by_index[$i]:-nothing} (render the missing frames with 'firsthit frames MOVIE --resume')"
+    want=$(name_of "$i") found=${by_index[${sorted[i]}]}
+    [[ $found == "$want" ]] || die "$frames_arg has a gap or stray frame: expected $want, found $found (render the missing frames with 'firsthit frames MOVIE --resume')"
   done
   if [[ -n $count ]] && ((n < count)); then
     missing="$(name_of "$n") is"

@@ -18,7 +18,7 @@ int parse_nonnegative(const std::string& s, const std::string& what) {
 }  // namespace
 
 FrameRange parse_range(const std::string& text) {
-    const auto sep = text.find_first_of(":-");
+    const auto sep = text.find_first_of(":-", 1);  // from 1: "-1:4" is a negative start
     if (sep == std::string::npos)
         throw std::invalid_argument("--range must look like A-B (frames A to B), A:B (A to B-1) or A: (A to the end), got '" +
                                     text + "'");

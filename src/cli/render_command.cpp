@@ -8,6 +8,7 @@
 #include "cli/human.h"
 #include "cli/job.h"
 #include "cli/stats_output.h"
+#include "io/atomic_file.h"
 #include "io/image_writer.h"
 #include "io/input_error.h"
 #include "pipeline/frame_pipeline.h"
@@ -34,7 +35,8 @@ int run_render(const Args& args) {
             throw UsageError("-o - writes PNG bytes to standard output, which is a terminal; redirect it "
                              "(> out.png) or pipe it");
     }
-    if (!out.empty()) image_format_of(out);  // a bad name before loading anything
+    if (!out.empty() && out != "-") check_output_file(out);  // a bad place or name before loading anything
+    if (!out.empty()) image_format_of(out);
     const Job job = job_from_args(args);
     const int threads = args.integer("--threads", 0, 0, 1024);
     if (out.empty()) out = default_output(job);

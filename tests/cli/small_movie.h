@@ -41,4 +41,12 @@ inline std::vector<std::string> files_in(const std::filesystem::path& dir) {
     return names;
 }
 
+// The frame files in a folder `firsthit frames` wrote: its names but the
+// movie file beside them (frame_movie.txt), sorted.
+inline std::vector<std::string> frames_in(const std::filesystem::path& dir) {
+    std::vector<std::string> names = files_in(dir);
+    std::erase_if(names, [](const std::string& n) { return n.ends_with("movie.txt"); });
+    return names;
+}
+
 }  // namespace fh::test

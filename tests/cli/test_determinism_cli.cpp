@@ -20,7 +20,7 @@ fs::path movie_dir(const std::string& name) {
     return small_movie(name, 48, 40, 10, "movie.yaml", "render: {samples_per_pixel: 2}\n");
 }
 
-std::vector<std::string> listing(const fs::path& dir) { return files_in(dir); }
+std::vector<std::string> listing(const fs::path& dir) { return frames_in(dir); }
 
 void run_frames(const fs::path& dir, const fs::path& out, const std::string& extra) {
     const auto r = run_firsthit("frames " + (dir / "movie.yaml").string() + " --quiet --out " + out.string() + " " +

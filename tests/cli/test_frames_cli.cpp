@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 // A 64x64 copy of the report's scene and a 12-frame orbit of it.
 fs::path tiny_movie(const std::string& name) { return small_movie(name, 64, 64, 12, "tiny.yaml"); }
 
-std::vector<std::string> frame_files(const fs::path& dir) { return files_in(dir); }
+std::vector<std::string> frame_files(const fs::path& dir) { return frames_in(dir); }
 
 std::string frames(const fs::path& dir, const std::string& extra) {
     return "frames " + (dir / "tiny.yaml").string() + " --quiet " + extra;
@@ -80,7 +80,7 @@ TEST(FramesCli, BadSelectionsAreUsageErrors) {
     const fs::path dir = tiny_movie("frames_bad");
     const std::string out = " --out " + (dir / "f").string();
     EXPECT_EQ(run_firsthit(frames(dir, "--range 0:13" + out)).err,
-              "firsthit: error: --range 0:13 reaches past the movie's 12 frames\n");
+              "firsthit: error: --range 0:13: frame 12 is past the movie's end: its 12 frames are 0 to 11\n");
     EXPECT_EQ(run_firsthit(frames(dir, "--shard 3/3" + out)).err,
               "firsthit: error: --shard 3/3: need 0 <= K < N\n");
     EXPECT_EQ(run_firsthit(frames(dir, "--shard 3/3" + out)).status, 2);

@@ -119,13 +119,6 @@ TEST(NewcomerCli, RenderSaysWhatItWroteUnlessQuiet) {
     EXPECT_EQ(r.out + r.err, "");
 }
 
-// The frame files `frames` left, without its movie file.
-std::vector<std::string> frame_files(const fs::path& dir) {
-    std::vector<std::string> names = files_in(dir);
-    std::erase_if(names, [](const std::string& n) { return n.ends_with("movie.txt"); });
-    return names;
-}
-
 TEST(NewcomerCli, FramesPicksFramesByNumberOrRange) {
     const fs::path dir = tiny("frames_pick");
     const std::string movie = q(dir / "tiny.yaml");
@@ -133,13 +126,13 @@ TEST(NewcomerCli, FramesPicksFramesByNumberOrRange) {
         return run_firsthit("frames " + movie + " --quiet --resolution 8x8 --out " + q(dir / out) + " " + flags);
     };
     ASSERT_EQ(frames("one", "--frame 3").status, 0);
-    EXPECT_EQ(frame_files(dir / "one"), std::vector<std::string>{"frame_0003.png"});
+    EXPECT_EQ(frames_in(dir / "one"), std::vector<std::string>{"frame_0003.png"});
     ASSERT_EQ(frames("open", "--range 9:").status, 0);
-    EXPECT_EQ(frame_files(dir / "open"), (std::vector<std::string>{"frame_0009.png", "frame_0010.png", "frame_0011.png"}));
+    EXPECT_EQ(frames_in(dir / "open"), (std::vector<std::string>{"frame_0009.png", "frame_0010.png", "frame_0011.png"}));
     ASSERT_EQ(frames("inclusive", "--range 2-4").status, 0);
-    EXPECT_EQ(frame_files(dir / "inclusive"), (std::vector<std::string>{"frame_0002.png", "frame_0003.png", "frame_0004.png"}));
+    EXPECT_EQ(frames_in(dir / "inclusive"), (std::vector<std::string>{"frame_0002.png", "frame_0003.png", "frame_0004.png"}));
     ASSERT_EQ(frames("slice", "--range 2:4").status, 0);
-    EXPECT_EQ(frame_files(dir / "slice"), (std::vector<std::string>{"frame_0002.png", "frame_0003.png"}));
+    EXPECT_EQ(frames_in(dir / "slice"), (std::vector<std::string>{"frame_0002.png", "frame_0003.png"}));
     const std::vector<std::pair<std::string, std::string>> bad = {
         {"--range 5-20", "--range 5-20: frame 20 is past the movie's end: its 12 frames are 0 to 11"},
         {"--range 12:", "--range 12:: frame 12 is past the movie's end: its 12 frames are 0 to 11"},
@@ -210,7 +203,7 @@ TEST(NewcomerCli, FramesRefusesAnotherMoviesFramesUnlessClean) {
     r = run_firsthit("frames " + q(shorter) + " --clean --out " + q(out));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err.rfind("firsthit: --clean removed 12 old frames in " + out.string() + "\n", 0), 0u) << r.err;
-    EXPECT_EQ(frame_files(out).size(), 6u);
+    EXPECT_EQ(frames_in(out).size(), 6u);
     // Without a movie file (an older firsthit, or frames copied by hand),
     // frames past the end are still found.
     fs::remove(out / "frame_movie.txt");
@@ -255,7 +248,7 @@ TEST(NewcomerCli, MakeMovieWritesWhereItIsRun) {
                              source_path("scripts/make_movie.sh") + " tiny.yaml --quiet");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_TRUE(fs::exists(dir / "output/tiny.mp4"));
-    EXPECT_EQ(frame_files(dir / "output/tiny").size(), 12u);
+    EXPECT_EQ(frames_in(dir / "output/tiny").size(), 12u);
     EXPECT_EQ(r.out, "tiny: rendered and encoded into output/tiny.mp4 in " + r.out.substr(r.out.rfind(" in ") + 4));
 }
 

@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 // A 64x64 copy of the report's scene and a 12-frame orbit of it.
 fs::path tiny_movie(const std::string& name) { return small_movie(name, 64, 64, 12, "tiny.yaml"); }
 
-std::vector<std::string> frame_files(const fs::path& dir) { return files_in(dir); }
+std::vector<std::string> frame_files(const fs::path& dir) { return frames_in(dir); }
 
 // firsthit frames with exactly the scheduler variables `env` (VAR=value
 // words), whatever the environment ctest runs in.
