@@ -29,8 +29,8 @@ const std::vector<CommandSpec>& all_commands() {
                                   "writes a movie's frames"}})},
         {"frames", "MOVIE", "render a movie's frames to PNG files, on every core",
          "Renders the frames of a movie file to DIR/frame_0000.png, frame_0001.png, ... (or the --out "
-         "pattern's names), and beside them NAME's movie.txt (frame_movie.txt for frame_NNNN.png): the "
-         "movie, its frame count, fps and size, which scripts/encode.sh reads. Each file is written under "
+         "pattern's names), and beside them PREFIXmovie.txt (frame_movie.txt beside frame_NNNN.png): "
+         "the movie, its frame count, fps and size, which scripts/encode.sh reads. Each file is written under "
          "a temporary name and renamed, so a frame file is always whole. On a terminal a progress line "
          "shows frames done, frames per second and the time left.",
          {"--out", "--frame", "--range", "--shard", "--shards", "--resume", "--clean", "--resolution", "--scale",
