@@ -23,6 +23,24 @@ namespace detail {
 
 inline std::uint8_t to_byte(double v) { return std::uint8_t(std::floor(v + 0.5)); }
 
+// A packet's lanes widened to double, as 32-bit integers and as bytes.
+template <typename T>
+struct WideLanes {
+    typedef double Doubles __attribute__((vector_size(kLanes<T> * sizeof(double))));
+    typedef std::int32_t Ints __attribute__((vector_size(kLanes<T> * sizeof(std::int32_t))));
+    typedef std::uint8_t Bytes __attribute__((vector_size(kLanes<T>)));
+};
+
+// to_byte of each lane of a clamped channel, as vector conversions: in
+// [0, 255], floor(v + 0.5) is the truncation, and the sum is taken in double
+// (in float, v + 0.5 would round first), so the bytes are to_byte's.
+template <typename T>
+FH_HOT_INLINE typename WideLanes<T>::Bytes to_bytes(const Lanes<T>& v) {
+    using W = WideLanes<T>;
+    const typename W::Doubles d = __builtin_convertvector(v, typename W::Doubles) + 0.5;
+    return __builtin_convertvector(__builtin_convertvector(d, typename W::Ints), typename W::Bytes);
+}
+
 // The clamped colour of each sample (SPEC section 4), lane by lane; a sample
 // that came out NaN or infinite is counted and contributes black.
 template <typename T>
@@ -58,27 +76,11 @@ void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1
             counts.primary += std::uint64_t(nx * ny);
             const ColorLanes<T> c =
                 clamp_samples(shader.trace(camera.generate(px, py), active, counts, visible), active, counts);
-            auto put = [&](auto&& byte_of) {
-                for (int j = 0; j < ny; ++j) {
-                    std::uint8_t* out = image.pixel(x, y + j);
-                    for (int i = 0; i < nx; ++i)
-                        for (int k = 0; k < 3; ++k) out[3 * i + k] = byte_of(k, j * BW + i);
-                }
-            };
-            if constexpr (std::is_same_v<T, double>) {
-                // In [0, 255]: floor(v + 0.5) is the truncation, one vector
-                // conversion per channel. (In float, v + 0.5 would round
-                // before the truncation: that path adds in double.)
-                const LaneInts<T> bytes[3] = {__builtin_convertvector(c.x + T(0.5), LaneInts<T>),
-                                              __builtin_convertvector(c.y + T(0.5), LaneInts<T>),
-                                              __builtin_convertvector(c.z + T(0.5), LaneInts<T>)};
-                put([&](int k, int lane) { return std::uint8_t(bytes[k][lane]); });
-            } else {
-                alignas(64) T rgb[3][W];
-                store(rgb[0], c.x);
-                store(rgb[1], c.y);
-                store(rgb[2], c.z);
-                put([&](int k, int lane) { return to_byte(double(rgb[k][lane])); });
+            const typename WideLanes<T>::Bytes bytes[3] = {to_bytes<T>(c.x), to_bytes<T>(c.y), to_bytes<T>(c.z)};
+            for (int j = 0; j < ny; ++j) {
+                std::uint8_t* out = image.pixel(x, y + j);
+                for (int i = 0; i < nx; ++i)
+                    for (int k = 0; k < 3; ++k) out[3 * i + k] = bytes[k][j * BW + i];
             }
         }
     }
