@@ -37,7 +37,8 @@ public:
                       << folder_ << "\n";
     }
     void removed_old_frames(int count) override {
-        if (show_messages_) std::cerr << "firsthit: --clean removed " << plural(count, "old frame") << " in " << folder_ << "\n";
+        if (show_messages_)
+            std::cerr << "firsthit: --clean removed " << plural(count, "old frame") << " in " << folder_ << "\n";
     }
     void starting(int frames) override { progress_.emplace(frames, show_); }
     void frame_done(int) override { progress_->frame_done(); }
@@ -63,14 +64,14 @@ std::vector<int> selected_frames(const Args& args, int n) {
     if (shards && !args.has("--shard")) throw UsageError("--shards N goes with --shard auto");
     try {
         const auto range = args.value("--range");
-        const auto shard = args.value("--shard");
+        const auto shard_text = args.value("--shard");
+        const auto shard = shard_text ? std::optional(parse_shard_option(*shard_text, shards)) : std::nullopt;
         if (const auto frame = args.value("--frame")) {
             if (range) throw UsageError("--frame N is --range N-N: give one of them");
             const int i = parse_int(*frame, "--frame", 0, n - 1);
-            return select_frames(n, FrameRange{i, i + 1}, shard ? std::optional(parse_shard_option(*shard, shards)) : std::nullopt);
+            return select_frames(n, FrameRange{i, i + 1}, shard);
         }
-        return select_frames(n, range ? std::optional(parse_range(*range)) : std::nullopt,
-                             shard ? std::optional(parse_shard_option(*shard, shards)) : std::nullopt);
+        return select_frames(n, range ? std::optional(parse_range(*range)) : std::nullopt, shard);
     } catch (const std::invalid_argument& e) {
         const auto range = args.value("--range");
         const std::string what = e.what();
