@@ -167,6 +167,16 @@ screen_equals "$tmp/ref/orthographic.png" || fail "after P the window does not s
 log "after P the window shows the orthographic render, pixel for pixel"
 quit_with q
 
+# --- --resolution: every camera of the scene at the given size ------------
+"$firsthit" render "$scene" --camera perspective --resolution 96x64 -o "$tmp/ref/perspective_96x64.png"
+"$firsthit" render "$scene" --camera orthographic --resolution 96x64 -o "$tmp/ref/orthographic_96x64.png"
+start_view "$scene" --resolution 96x64
+save_and_check view_scene_perspective.png "$tmp/ref/perspective_96x64.png"
+press p
+save_and_check view_scene_orthographic.png "$tmp/ref/orthographic_96x64.png"
+log "--resolution 96x64 holds for both cameras"
+quit_with q
+
 # --- a tiny movie: Right, End, Home, Left, Space, P ----------------------
 mkdir -p "$tmp/movie"
 sed -e 's/width: 800/width: 64/' -e 's/height: 800/height: 64/' "$scene" >"$tmp/movie/scene.yaml"
