@@ -54,7 +54,8 @@ FH_HOT_INLINE ColorLanes<T> clamp_samples(const ColorLanes<T>& c, const LaneInts
     return {clamp(c.x), clamp(c.y), clamp(c.z)};
 }
 
-// One sample through each pixel's centre, for the pixels [x0, x1) x [y0, y1):
+// One sample through each pixel's centre, for the pixels [x0, x1) x [y0, y1)
+// of one tile (at most kTileSize square):
 // a packet is a block of neighbouring pixels -- 4 wide and W / 4 high (4 x 2
 // for 8 doubles) rather than a row of W, so its rays stay close together and
 // part ways later in a BVH walk over small triangles -- and their colours go
@@ -66,23 +67,35 @@ void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1
     constexpr int BW = W < 4 ? W : 4, BH = W / BW;
     Lanes<T> dx, dy;
     for (int i = 0; i < W; ++i) dx[i] = T(i % BW), dy[i] = T(i / BW);
-    for (int y = y0; y < y1; y += BH) {
-        for (int x = x0; x < x1; x += BW) {
-            const int nx = std::min(BW, x1 - x), ny = std::min(BH, y1 - y);
-            // Lanes past the block's edge repeat a pixel of it, inactive.
-            const Lanes<T> px = min(T(x) + dx, splat(T(x + nx - 1))) + T(0.5);
-            const Lanes<T> py = min(T(y) + dy, splat(T(y + ny - 1))) + T(0.5);
-            const LaneInts<T> active = (dx < T(nx)) & (dy < T(ny));
-            counts.primary += std::uint64_t(nx * ny);
-            const ColorLanes<T> c =
-                clamp_samples(shader.trace(camera.generate(px, py), active, counts, visible), active, counts);
-            const typename WideLanes<T>::Bytes bytes[3] = {to_bytes<T>(c.x), to_bytes<T>(c.y), to_bytes<T>(c.z)};
-            for (int j = 0; j < ny; ++j) {
-                std::uint8_t* out = image.pixel(x, y + j);
-                for (int i = 0; i < nx; ++i)
-                    for (int k = 0; k < 3; ++k) out[3 * i + k] = bytes[k][j * BW + i];
-            }
+    struct Block {
+        int x, y, nx, ny;
+    };
+    Block blocks[(kTileSize / BW + 1) * (kTileSize / BH + 1)];
+    int n = 0;
+    for (int y = y0; y < y1; y += BH)
+        for (int x = x0; x < x1; x += BW) blocks[n++] = {x, y, std::min(BW, x1 - x), std::min(BH, y1 - y)};
+    // Lanes past a block's edge repeat a pixel of it, inactive.
+    auto rays_of = [&](const Block& b) FH_HOT_LAMBDA {
+        const Lanes<T> px = min(T(b.x) + dx, splat(T(b.x + b.nx - 1))) + T(0.5);
+        const Lanes<T> py = min(T(b.y) + dy, splat(T(b.y + b.ny - 1))) + T(0.5);
+        return camera.generate(px, py);
+    };
+    RayPacket<T> rays = rays_of(blocks[0]);
+    for (int k = 0; k < n; ++k) {
+        const Block& b = blocks[k];
+        // The next block's rays before this one is traced: their square root
+        // and division (a long wait in double) run beside the trace.
+        const RayPacket<T> next = k + 1 < n ? rays_of(blocks[k + 1]) : rays;
+        const LaneInts<T> active = (dx < T(b.nx)) & (dy < T(b.ny));
+        counts.primary += std::uint64_t(b.nx * b.ny);
+        const ColorLanes<T> c = clamp_samples(shader.trace(rays, active, counts, visible), active, counts);
+        const typename WideLanes<T>::Bytes bytes[3] = {to_bytes<T>(c.x), to_bytes<T>(c.y), to_bytes<T>(c.z)};
+        for (int j = 0; j < b.ny; ++j) {
+            std::uint8_t* out = image.pixel(b.x, b.y + j);
+            for (int i = 0; i < b.nx; ++i)
+                for (int ch = 0; ch < 3; ++ch) out[3 * i + ch] = bytes[ch][j * BW + i];
         }
+        rays = next;
     }
 }
 
