@@ -59,12 +59,4 @@ std::vector<int> select_frames(int frame_count, std::optional<FrameRange> range,
     return frames;
 }
 
-std::string frame_file_name(int frame, int frame_count) {
-    size_t digits = std::to_string(frame_count > 0 ? frame_count - 1 : 0).size();
-    if (digits < 4) digits = 4;
-    std::string n = std::to_string(frame);
-    if (n.size() < digits) n.insert(0, digits - n.size(), '0');
-    return "frame_" + n + ".png";
-}
-
 }  // namespace fh

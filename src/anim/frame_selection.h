@@ -1,6 +1,6 @@
-// Which frames of a movie a run renders, and what their files are called.
-// A frame's number and file name depend only on its global index, never on
-// the range or shard that selected it.
+// Which frames of a movie a run renders. A frame's number (and so its file,
+// pipeline/frame_files.h) depends only on its global index, never on the
+// range or shard that selected it.
 #pragma once
 
 #include <optional>
@@ -29,7 +29,5 @@ std::vector<int> select_frames(int frame_count, std::optional<FrameRange> range,
 FrameRange parse_range(const std::string& text);
 Shard parse_shard(const std::string& text);
 
-// frame_0042.png: zero-padded to 4 digits, or more when the movie needs them.
-std::string frame_file_name(int frame, int frame_count);
 
 }  // namespace fh

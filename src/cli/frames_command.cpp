@@ -140,7 +140,7 @@ int run_frames(const Args& args) {
     const double fps = run.seconds > 0 ? run.rendered / run.seconds : 0;
     if (!quiet)
         std::cerr << "rendered " << plural(run.to_render, "frame") << " in " << human_duration(run.seconds) << " ("
-                  << human_rate(fps) << " frames/s) into " << request.files.folder.string() << "\n";
+                  << human_number(fps) << " frames/s) into " << request.files.folder.string() << "\n";
     if (args.has("--stats")) {
         std::cout << "frames: " << run.to_render << "\n"
                   << "seconds: " << run.seconds << "\n"

@@ -27,8 +27,6 @@ inline std::string human_duration(double seconds) {
     return buf;
 }
 
-inline std::string human_rate(double per_second) { return human_number(per_second); }
-
 // "1 frame", "24 frames".
 inline std::string plural(long long n, const std::string& noun) {
     return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");

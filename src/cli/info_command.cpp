@@ -9,6 +9,7 @@
 #include "io/input_error.h"
 #include "io/movie_loader.h"
 #include "io/scene_loader.h"
+#include "pipeline/frame_files.h"
 
 namespace fh {
 
@@ -44,7 +45,7 @@ int run_info(const Args& args) {
                   << "camera: " << m.camera.name << "\n"
                   << "width: " << m.camera.width << "\n"
                   << "height: " << m.camera.height << "\n"
-                  << "first_frame_file: " << frame_file_name(0, m.frame_count()) << "\n";
+                  << "first_frame_file: " << FrameFiles{}.name(0, m.frame_count()) << "\n";
         print_scene(m.scene, m.settings);
     } else {
         const SceneFile scene = load_scene(file);  // before printing: an error prints nothing else

@@ -12,20 +12,9 @@
 #include "io/input_error.h"
 #include "io/png_writer.h"
 
-// stb_image_write's JPEG, BMP and TGA encoders, compiled here privately
-// (static). Its PNG encoder, with our deflate, is png_writer.cpp's own copy.
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STB_IMAGE_WRITE_STATIC
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wconversion"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wunused-function"
-#endif
+// stb_image_write's JPEG, BMP and TGA encoders: compiled once, in
+// io/png_writer.cpp, with the PNG hooks.
 #include <stb_image_write.h>
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
 
 namespace fh {
 

@@ -12,12 +12,12 @@
 #include "io/deflate.h"
 
 // stb_image_write lays out the PNG (the Sub filter on every row, chunks, CRCs)
-// and is compiled here, privately; the deflate inside is ours,
+// and is compiled here, once for the program (io/image_writer.cpp calls its
+// JPEG, BMP and TGA writers); the deflate inside is ours,
 // zlib_compress_runs, through stb's hook for it: after the Sub filter a
 // frame is mostly runs of 0, which it codes ~4x faster than zlib at level 1
 // (README, Speed). The chunks' CRCs are zlib's crc32() (fh::png_crc32, below).
 #define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STB_IMAGE_WRITE_STATIC
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wconversion"

@@ -83,10 +83,17 @@ FrameFiles parse_frame_files(const std::string& out) {
     return files;
 }
 
+// The padding of a frame_count-frame movie's numbers.
+int FrameFiles::width(int frame_count) const {
+    return digits ? digits : std::max(4, int(std::to_string(frame_count > 0 ? frame_count - 1 : 0).size()));
+}
+
 std::string FrameFiles::name(int frame, int frame_count) const {
-    int d = digits;
-    if (d == 0) d = std::max(4, int(std::to_string(frame_count > 0 ? frame_count - 1 : 0).size()));
-    return prefix + padded(frame, d) + suffix;
+    return prefix + padded(frame, width(frame_count)) + suffix;
+}
+
+std::string FrameFiles::pattern(int frame_count) const {
+    return prefix + "%0" + std::to_string(width(frame_count)) + "d" + suffix;
 }
 
 int FrameFiles::frame_of(const std::string& file_name) const {

@@ -20,11 +20,16 @@ struct FrameFiles {
     // PREFIX0042SUFFIX for frame 42 of a frame_count-frame movie.
     std::string name(int frame, int frame_count) const;
     std::filesystem::path path(int frame, int frame_count) const { return folder / name(frame, frame_count); }
+    // The names as printf and ffmpeg read them: frame_%04d.png.
+    std::string pattern(int frame_count) const;
     // The frame number a file name of this pattern stands for, any padding
     // (frame_12345.png, frame_0007.png); -1 for any other name.
     int frame_of(const std::string& file_name) const;
     // PREFIXmovie.txt: frame_movie.txt beside frame_NNNN.png.
     std::filesystem::path movie_file() const { return folder / (prefix + "movie.txt"); }
+
+private:
+    int width(int frame_count) const;
 };
 
 // `frames --out`'s text: a pattern when its file name holds %0Nd, %d or a run

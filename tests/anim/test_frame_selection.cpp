@@ -55,12 +55,6 @@ TEST(FrameSelection, InclusiveAndOpenRanges) {
     }
 }
 
-TEST(FrameSelection, FileNamesArePaddedToFourDigitsOrMore) {
-    EXPECT_EQ(frame_file_name(0, 300), "frame_0000.png");
-    EXPECT_EQ(frame_file_name(42, 300), "frame_0042.png");
-    EXPECT_EQ(frame_file_name(42, 10001), "frame_00042.png");
-    EXPECT_EQ(frame_file_name(9999, 10000), "frame_9999.png");
-}
 
 }  // namespace
 }  // namespace fh
