@@ -5,7 +5,8 @@
 // at (0, -12, 6) looking along (0, 12, -6), 800 x 800, 1 sample per pixel.
 // Prints one CSV row per size: triangles, prepare ms (flattening + BVH),
 // BVH build ms, median render ms, rays per second, peak memory so far.
-//   firsthit_bench_scaling [--threads N] [--runs K] [--max-level K] [--precision float|double]
+//   firsthit_bench_scaling [--threads N] [--runs K] [--min-level K] [--max-level K] [--precision float|double]
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -55,11 +56,12 @@ double peak_rss_mb() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    int threads = 0, runs = 5, max_level = 8;
+    int threads = 0, runs = 5, min_level = 1, max_level = 8;
     Precision precision = Precision::float64;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!std::strcmp(argv[i], "--threads")) threads = std::atoi(argv[i + 1]);
         else if (!std::strcmp(argv[i], "--runs")) runs = std::max(1, std::atoi(argv[i + 1]));
+        else if (!std::strcmp(argv[i], "--min-level")) min_level = std::atoi(argv[i + 1]);
         else if (!std::strcmp(argv[i], "--max-level")) max_level = std::atoi(argv[i + 1]);
         else if (!std::strcmp(argv[i], "--precision"))
             precision = std::strcmp(argv[i + 1], "float") ? Precision::float64 : Precision::float32;
@@ -70,7 +72,7 @@ int main(int argc, char** argv) {
     settings.effects.specular = false;
     settings.effects.glazing = false;
     std::printf("triangles,prepare_ms,bvh_build_ms,bvh_nodes,render_ms,rays_per_second,peak_rss_mb\n");
-    for (int level = 1; level <= max_level; ++level) {
+    for (int level = std::max(1, min_level); level <= max_level; ++level) {
         const Scene scene = scaling_scene(level);
         const PreparedScene prepared(scene, settings, &pool);
         std::vector<double> ms;
