@@ -72,13 +72,13 @@ struct Pending {
 
 class Builder {
 public:
-    Builder(const std::vector<Aabb>& boxes, const std::vector<dvec3>& centroids, std::vector<std::int32_t>& prims,
+    Builder(const std::vector<Aabb>& boxes, const std::vector<dvec3>& centroids, BigArray<std::int32_t>& prims,
             ThreadPool* pool)
         : boxes_(boxes), centroids_(centroids), prims_(prims), pool_(pool) {}
 
     // Builds [begin, end) into nodes (its root at the returned index); with
     // defer, ranges smaller than kSubtreeSize go to `pending` instead.
-    int build(std::vector<BvhNode>& nodes, int begin, int end, const Aabb& bounds, const Aabb& centroids,
+    int build(BigArray<BvhNode>& nodes, int begin, int end, const Aabb& bounds, const Aabb& centroids,
               int depth, bool defer, std::vector<Pending>* pending, int parent = -1, int slot = 0) {
         if (defer && end - begin < kSubtreeSize) {
             pending->push_back({begin, end, bounds, centroids, depth, parent, slot});
@@ -201,7 +201,7 @@ private:
 
     const std::vector<Aabb>& boxes_;
     const std::vector<dvec3>& centroids_;
-    std::vector<std::int32_t>& prims_;
+    BigArray<std::int32_t>& prims_;
     ThreadPool* pool_;
 };
 
@@ -224,7 +224,7 @@ Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool) {
     // each into nodes of its own, then appended.
     std::vector<Pending> pending;
     builder.build(bvh.nodes, 0, int(bvh.prims.size()), bounds, centroid_bounds, 0, true, &pending);
-    std::vector<std::vector<BvhNode>> subtrees(pending.size());
+    std::vector<BigArray<BvhNode>> subtrees(pending.size());
     auto build_subtree = [&](int k, int) {
         const Pending& p = pending[size_t(k)];
         builder.build(subtrees[size_t(k)], p.begin, p.end, p.bounds, p.centroid_bounds, p.depth, false, nullptr);

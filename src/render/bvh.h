@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/big_array.h"
 #include "core/vec.h"
 
 namespace fh {
@@ -52,8 +53,8 @@ struct BvhNode {
 struct Bvh {
     // nodes[0] is the root (absent: nothing bounded); a node's children
     // always come after it.
-    std::vector<BvhNode> nodes;
-    std::vector<std::int32_t> prims;  // the input's indices, in leaf order
+    BigArray<BvhNode> nodes;
+    BigArray<std::int32_t> prims;  // the input's indices, in leaf order
     double build_ms = 0;
 
     bool empty() const { return nodes.empty(); }

@@ -44,8 +44,8 @@ struct NodeBox {
 };
 
 template <typename T>
-std::vector<NodeBox<T>> boxes_of(const Bvh& bvh) {
-    std::vector<NodeBox<T>> out;
+BigArray<NodeBox<T>> boxes_of(const Bvh& bvh) {
+    BigArray<NodeBox<T>> out;
     out.reserve(bvh.nodes.size());
     for (const BvhNode& n : bvh.nodes)
         out.push_back({{T(n.lo[0]), T(n.lo[1]), T(n.lo[2])}, {T(n.hi[0]), T(n.hi[1]), T(n.hi[2])}});

@@ -94,8 +94,8 @@ void flatten(const Scene& scene, FlatGeometry<T>& g) {
 template <typename T>
 void in_leaf_order(FlatGeometry<T>& g) {
     const int ns = int(g.spheres.size()), np = int(g.planes.size());
-    std::vector<Triangle<T>> triangles;
-    std::vector<PrimitiveSurface<T>> surfaces(g.surfaces.begin(), g.surfaces.begin() + ns + np);
+    BigArray<Triangle<T>> triangles;
+    BigArray<PrimitiveSurface<T>> surfaces(g.surfaces.begin(), g.surfaces.begin() + ns + np);
     std::vector<std::int32_t> source;
     triangles.reserve(g.triangles.size());
     source.reserve(g.triangles.size());

@@ -145,11 +145,11 @@ template <typename T>
 struct FlatGeometry {
     std::vector<Sphere<T>> spheres;
     std::vector<Plane<T>> planes;
-    std::vector<Triangle<T>> triangles;
+    BigArray<Triangle<T>> triangles;
     // Over the spheres and triangles: index i < spheres.size() is sphere i,
     // any other is triangle i - spheres.size().
     Bvh bvh;
-    std::vector<NodeBox<T>> bvh_boxes;  // bvh.nodes' boxes in T
+    BigArray<NodeBox<T>> bvh_boxes;  // bvh.nodes' boxes in T
     // At most kMaxSubset spheres and triangles: no BVH walk, every sphere
     // tested, the triangles behind one bounding sphere, all in id order.
     bool small = false;
@@ -157,8 +157,8 @@ struct FlatGeometry {
     // A small scene's every sphere and triangle, as a list in id order
     // (render/packet_intersect.h tests it one by one); larger: walk_bvh.
     PrimitiveSubset everything;
-    std::vector<PrimitiveSurface<T>> surfaces;  // by primitive id
-    std::vector<SmoothTriangle<T>> smooth_triangles;
+    BigArray<PrimitiveSurface<T>> surfaces;  // by primitive id
+    BigArray<SmoothTriangle<T>> smooth_triangles;
     // triangles[k] is the Scene's triangles[triangle_source[k]]: a refit
     // reads the moved triangles in the same order.
     std::vector<std::int32_t> triangle_source;
