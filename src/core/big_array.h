@@ -32,7 +32,7 @@ struct HugePageAllocator {
     T* allocate(std::size_t n) {
         if (n > std::size_t(-1) / sizeof(T)) throw std::bad_alloc();
         const std::size_t bytes = n * sizeof(T);
-        if (bytes < kHugePageBytes) return static_cast<T*>(::operator new(bytes));
+        if (bytes < kHugePageBytes) return static_cast<T*>(::operator new(bytes, std::align_val_t(alignof(T))));
         const std::size_t rounded = (bytes + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;
         void* p = std::aligned_alloc(kHugePageBytes, rounded);
         if (!p) throw std::bad_alloc();
@@ -43,7 +43,7 @@ struct HugePageAllocator {
     }
 
     void deallocate(T* p, std::size_t n) {
-        if (n * sizeof(T) < kHugePageBytes) ::operator delete(p);
+        if (n * sizeof(T) < kHugePageBytes) ::operator delete(p, std::align_val_t(alignof(T)));
         else std::free(p);
     }
 

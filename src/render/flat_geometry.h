@@ -149,7 +149,7 @@ struct FlatGeometry {
     // Over the spheres and triangles: index i < spheres.size() is sphere i,
     // any other is triangle i - spheres.size().
     Bvh bvh;
-    BigArray<NodeBox<T>> bvh_boxes;  // bvh.nodes' boxes in T
+    BigArray<WalkNode<T>> walk_nodes;  // bvh.nodes as the walk reads them
     // At most kMaxSubset spheres and triangles: no BVH walk, every sphere
     // tested, the triangles behind one bounding sphere, all in id order.
     bool small = false;

@@ -70,7 +70,7 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const Ra
         return false;
     };
 
-    for_each_leaf(geometry.bvh, geometry.bvh_boxes.data(), ray, active, h.t, test_leaf);
+    for_each_leaf(geometry.walk_nodes, ray, active, h.t, test_leaf);
     return h;
 }
 
@@ -114,7 +114,7 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& geometry, const RayPac
                 return blocked;
         return blocked;
     }
-    for_each_leaf(geometry.bvh, geometry.bvh_boxes.data(), ray, active, limit, test_leaf);
+    for_each_leaf(geometry.walk_nodes, ray, active, limit, test_leaf);
     return blocked;
 }
 

@@ -21,13 +21,19 @@ TEST(BigArray, LargeArraysStartOnAHugePageAndHoldTheirValues) {
     EXPECT_EQ(copy, a);
 }
 
-// Small ones come from the ordinary heap: no 2 MiB per few nodes.
-TEST(BigArray, SmallArraysAreOrdinary) {
-    BigArray<double> small(10, 1.5);
-    EXPECT_EQ(small.size(), 10u);
-    EXPECT_DOUBLE_EQ(small[9], 1.5);
-    small.push_back(2.5);
-    EXPECT_DOUBLE_EQ(small.back(), 2.5);
+// Small ones come from the ordinary heap (no 2 MiB for a few nodes), at
+// their type's alignment: the walk's nodes are aligned to a cache line.
+TEST(BigArray, SmallArraysAreOrdinaryAndAligned) {
+    struct alignas(64) Line {
+        double x[8];
+    };
+    BigArray<Line> small(3);
+    for (int k = 0; k < 5; ++k) {
+        EXPECT_EQ(reinterpret_cast<std::uintptr_t>(small.data()) % 64, 0u);
+        small.push_back(Line{{double(k)}});
+    }
+    EXPECT_EQ(small.size(), 8u);
+    EXPECT_DOUBLE_EQ(small.back().x[0], 4.0);
 }
 
 }  // namespace
