@@ -3,7 +3,8 @@
 # family of bench/bench_scaling.cpp -- icospheres of 80 to 1.3 million
 # triangles on a floor, 800x800, 1 sample per pixel, a shadowing directional
 # light -- on 2 threads, and writes OUT_DIR/scaling.csv and a log-log plot
-# OUT_DIR/scaling.png (gnuplot).
+# OUT_DIR/scaling.png (gnuplot); the same family in float (Embree's
+# precision, the like-for-like comparison) into OUT_DIR/scaling_float.csv.
 #   scripts/bench_scaling.sh [OUT_DIR] [--threads N] [--runs K] [--max-level K]
 # Then the same for real meshes from Debian's package data (scripts/
 # fetch_meshes.sh), through `firsthit bench`: OUT_DIR/scaling_real.csv.
@@ -31,6 +32,8 @@ done
 mkdir -p "$out"
 "$bench" "${args[@]}" | tee "$out/scaling.csv.tmp"
 mv "$out/scaling.csv.tmp" "$out/scaling.csv"
+"$bench" "${args[@]}" --precision float | tee "$out/scaling_float.csv.tmp"
+mv "$out/scaling_float.csv.tmp" "$out/scaling_float.csv"
 
 # Real meshes: the bunny (and whatever scene files name fetched meshes).
 bash "$here/fetch_meshes.sh"
@@ -75,12 +78,13 @@ set ylabel 'ms (log scale)'
 set logscale xy
 set grid
 set key top left
-plot '$out/scaling.csv' skip 1 using 1:5 with linespoints lw 2 pt 7 title 'icospheres: render (per frame)', \
+plot '$out/scaling.csv' skip 1 using 1:5 with linespoints lw 2 pt 7 title 'icospheres: render (per frame, double)', \
+     '$out/scaling_float.csv' skip 1 using 1:5 with linespoints lw 2 pt 6 title 'icospheres: render (per frame, float)', \
      '' skip 1 using 1:2 with linespoints lw 2 pt 5 title 'icospheres: prepare (flatten + BVH, once)', \
      '$out/scaling_real.csv' skip 1 using 2:7 with points pt 9 ps 2 title 'Stanford bunny: render', \
      '' skip 1 using 2:4 with points pt 11 ps 2 title 'Stanford bunny: prepare'$embree_plot
 PLOT
-  echo "bench_scaling.sh: $out/scaling.csv, $out/scaling_real.csv$([[ $have_embree == 1 ]] && echo ", $out/scaling_embree.csv"), $out/scaling.png"
+  echo "bench_scaling.sh: $out/scaling.csv, $out/scaling_float.csv, $out/scaling_real.csv$([[ $have_embree == 1 ]] && echo ", $out/scaling_embree.csv"), $out/scaling.png"
 else
-  echo "bench_scaling.sh: $out/scaling.csv$([[ $have_embree == 1 ]] && echo ", $out/scaling_embree.csv") (no gnuplot: no plot)"
+  echo "bench_scaling.sh: $out/scaling.csv, $out/scaling_float.csv$([[ $have_embree == 1 ]] && echo ", $out/scaling_embree.csv") (no gnuplot: no plot)"
 fi
