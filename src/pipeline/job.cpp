@@ -45,7 +45,7 @@ std::vector<std::string> check_movie_cameras(const std::string& file, const Movi
 
 void resize_camera(Camera& camera, const SizeOverride& size) {
     auto side = [&](int file_side) {
-        const double v = size.width > 0 ? 0 : std::max(1.0, std::round(file_side * size.scale));
+        const double v = std::max(1.0, std::round(file_side * size.scale));
         if (v > Limits::max_image_side)
             throw UsageError("--scale makes a side of " + std::to_string(long(v)) + " pixels; at most " +
                              std::to_string(Limits::max_image_side));
