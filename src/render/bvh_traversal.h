@@ -50,16 +50,20 @@ struct NodeBox {
 template <typename T>
 struct alignas(8 * sizeof(T)) WalkNode {
     NodeBox<T> box;
-    std::int32_t a;  // a leaf: its first primitive (Bvh::prims); inner: the second child's index
+    // A leaf: with a >= 0, the triangles a .. a + b - 1 (renumbered in leaf
+    // order: nothing to look up between a node and its triangles); else
+    // Bvh::prims[~a ..], which may hold spheres. Inner: the second child.
+    std::int32_t a;
     std::int32_t b;  // a leaf: how many primitives (> 0); inner: -1 - the split axis
 
     bool leaf() const { return b > 0; }
     int axis() const { return -1 - b; }
 };
 
-// The walk's copy of a hierarchy (empty for an empty one).
+// The walk's copy of a hierarchy (empty for an empty one). spheres: how
+// many of its input indices are spheres (the triangles follow them).
 template <typename T>
-BigArray<WalkNode<T>> walk_nodes_of(const Bvh& bvh) {
+BigArray<WalkNode<T>> walk_nodes_of(const Bvh& bvh, int spheres) {
     BigArray<WalkNode<T>> out;
     if (bvh.empty()) return out;
     out.reserve(bvh.nodes.size());
@@ -77,7 +81,10 @@ BigArray<WalkNode<T>> walk_nodes_of(const Bvh& bvh) {
         const BvhNode& n = bvh.nodes[size_t(t.node)];
         WalkNode<T> w{{{T(n.lo[0]), T(n.lo[1]), T(n.lo[2])}, {T(n.hi[0]), T(n.hi[1]), T(n.hi[2])}}, 0, 0};
         if (n.leaf()) {
-            w.a = n.first;
+            const std::int32_t* p = &bvh.prims[size_t(n.first)];
+            bool run = p[0] >= spheres;
+            for (int j = 1; run && j < n.count; ++j) run = p[j] == p[0] + j;
+            w.a = run ? p[0] - spheres : ~n.first;
             w.b = n.count;
         } else {
             w.b = -1 - n.axis;
@@ -102,7 +109,7 @@ FH_HOT_INLINE LaneInts<T> enters(const NodeBox<T>& n, const BoxRays<T>& r, const
     return (near <= far) & (near <= t_max) & (t_max > T(0));
 }
 
-// Calls leaf(first, count) for the leaves the packet enters, nearest first;
+// Calls leaf(a, count) for the leaves the packet enters (a: see WalkNode), nearest first;
 // t_max is read anew at every node (the leaves shorten it). leaf returns
 // true to end the walk (every shadow ray blocked).
 template <typename T, typename Leaf>

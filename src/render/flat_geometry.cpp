@@ -160,7 +160,7 @@ FlatGeometry<T> FlatGeometry<T>::build(const Scene& scene, ThreadPool* pool) {
     g.bvh = build_bvh(bounds_of(scene, g.triangle_source), pool);
     choose_small(scene, g);
     if (!g.small) in_leaf_order(g);
-    g.walk_nodes = walk_nodes_of<T>(g.bvh);
+    g.walk_nodes = walk_nodes_of<T>(g.bvh, int(g.spheres.size()));
     return g;
 }
 
@@ -182,7 +182,7 @@ FlatGeometry<T> FlatGeometry<T>::refit(const Scene& moved, ThreadPool* pool) con
     flatten(moved, g);
     g.bvh = bvh;
     refit_bvh(g.bvh, bounds_of(moved, g.triangle_source));
-    g.walk_nodes = walk_nodes_of<T>(g.bvh);
+    g.walk_nodes = walk_nodes_of<T>(g.bvh, int(g.spheres.size()));
     choose_small(moved, g);
     return g;
 }

@@ -58,14 +58,18 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const Ra
     }
     for (int p = 0; p < planes; ++p) keep(geometry.planes[size_t(p)].intersect(ray, T(0), reach()), spheres + p);
     auto test_leaf = [&](int first, int count) FH_HOT_LAMBDA {
-        for (int k = first; k < first + count; ++k) {
+        if (!basis) basis.emplace(ray);
+        if (first >= 0) {  // a run of triangles
+            for (int k = first; k < first + count; ++k)
+                keep(geometry.triangles[size_t(k)].intersect(*basis, T(0), reach()), spheres + planes + k);
+            return false;
+        }
+        for (int k = ~first; k < ~first + count; ++k) {
             const int i = geometry.bvh.prims[size_t(k)];
-            if (i < spheres) {
+            if (i < spheres)
                 keep(geometry.spheres[size_t(i)].intersect(ray, T(0), reach()), i);
-            } else {
-                if (!basis) basis.emplace(ray);
+            else
                 keep(geometry.triangles[size_t(i - spheres)].intersect(*basis, T(0), reach()), planes + i);
-            }
         }
         return false;
     };
@@ -91,14 +95,17 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& geometry, const RayPac
     const int spheres = int(geometry.spheres.size());
     std::optional<RayBasis<T>> basis;  // built once a triangle is reached
     auto test_leaf = [&](int first, int count) FH_HOT_LAMBDA {
-        for (int k = first; k < first + count; ++k) {
+        if (!basis) basis.emplace(ray);
+        if (first >= 0) {  // a run of triangles
+            for (int k = first; k < first + count; ++k)
+                if (block(geometry.triangles[size_t(k)].intersect(*basis, T(0), limit))) return true;
+            return false;
+        }
+        for (int k = ~first; k < ~first + count; ++k) {
             const int i = geometry.bvh.prims[size_t(k)];
-            if (i < spheres) {
-                if (block(geometry.spheres[size_t(i)].intersect(ray, T(0), limit))) return true;
-            } else {
-                if (!basis) basis.emplace(ray);
-                if (block(geometry.triangles[size_t(i - spheres)].intersect(*basis, T(0), limit))) return true;
-            }
+            if (i < spheres ? block(geometry.spheres[size_t(i)].intersect(ray, T(0), limit))
+                            : block(geometry.triangles[size_t(i - spheres)].intersect(*basis, T(0), limit)))
+                return true;
         }
         return false;
     };
