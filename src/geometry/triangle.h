@@ -10,9 +10,9 @@
 //     packet, per-lane selects that cost more than the basis). A shared
 //     vertex gets the same projected point in every triangle.
 //  2. Edge functions U, V, W are the 2x2 determinants of consecutive projected
-//     vertices, compensated by the products' exact rounding errors
-//     (core/exact.h): their sign is never wrong, and a shared edge gets
-//     exactly opposite values in its two triangles.
+//     vertices, each a rounded difference of rounded products (core/exact.h):
+//     their sign is never wrong (at worst zero within an ulp of zero), and a
+//     shared edge gets exactly opposite values in its two triangles.
 //  3. The ray hits when U, V, W have one sign, zeros included: a ray exactly
 //     through an edge or vertex hits every triangle there (the nearest-hit
 //     loop keeps one), never none. So among the triangles around any edge or
