@@ -22,6 +22,25 @@ struct HitLanes {
     LaneInts<T> prim;     // its primitive id, or kNoHit
 };
 
+// The primitives of a leaf the walk reports (a: see WalkNode), by kind:
+// sphere(i) for spheres[i], triangle(k) for triangles[k]. Either returns
+// true to stop the leaf, and then so does this.
+template <typename T, typename SphereFn, typename TriangleFn>
+FH_HOT_INLINE bool for_each_in_leaf(const FlatGeometry<T>& geometry, int a, int count, SphereFn&& sphere,
+                                    TriangleFn&& triangle) {
+    if (a >= 0) {  // a run of triangles
+        for (int k = a; k < a + count; ++k)
+            if (triangle(k)) return true;
+        return false;
+    }
+    const int spheres = int(geometry.spheres.size());
+    for (int k = ~a; k < ~a + count; ++k) {
+        const int i = geometry.bvh.prims[size_t(k)];
+        if (i < spheres ? sphere(i) : triangle(i - spheres)) return true;
+    }
+    return false;
+}
+
 // subset: what a tile's camera rays can hit (render/tile_culling.h), tested
 // one by one when it is short; nullptr or a long one: the BVH is walked.
 template <typename T>
@@ -57,21 +76,18 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const Ra
         return h;
     }
     for (int p = 0; p < planes; ++p) keep(geometry.planes[size_t(p)].intersect(ray, T(0), reach()), spheres + p);
-    auto test_leaf = [&](int first, int count) FH_HOT_LAMBDA {
+    auto test_leaf = [&](int a, int count) FH_HOT_LAMBDA {
         if (!basis) basis.emplace(ray);
-        if (first >= 0) {  // a run of triangles
-            for (int k = first; k < first + count; ++k)
-                keep(geometry.triangles[size_t(k)].intersect(*basis, T(0), reach()), spheres + planes + k);
-            return false;
-        }
-        for (int k = ~first; k < ~first + count; ++k) {
-            const int i = geometry.bvh.prims[size_t(k)];
-            if (i < spheres)
+        return for_each_in_leaf(
+            geometry, a, count,
+            [&](int i) FH_HOT_LAMBDA {
                 keep(geometry.spheres[size_t(i)].intersect(ray, T(0), reach()), i);
-            else
-                keep(geometry.triangles[size_t(i - spheres)].intersect(*basis, T(0), reach()), planes + i);
-        }
-        return false;
+                return false;
+            },
+            [&](int k) FH_HOT_LAMBDA {
+                keep(geometry.triangles[size_t(k)].intersect(*basis, T(0), reach()), spheres + planes + k);
+                return false;
+            });
     };
 
     for_each_leaf(geometry.walk_nodes, ray, active, h.t, test_leaf);
@@ -94,20 +110,12 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& geometry, const RayPac
         if (block(p.intersect(ray, T(0), limit))) return blocked;
     const int spheres = int(geometry.spheres.size());
     std::optional<RayBasis<T>> basis;  // built once a triangle is reached
-    auto test_leaf = [&](int first, int count) FH_HOT_LAMBDA {
+    auto test_leaf = [&](int a, int count) FH_HOT_LAMBDA {
         if (!basis) basis.emplace(ray);
-        if (first >= 0) {  // a run of triangles
-            for (int k = first; k < first + count; ++k)
-                if (block(geometry.triangles[size_t(k)].intersect(*basis, T(0), limit))) return true;
-            return false;
-        }
-        for (int k = ~first; k < ~first + count; ++k) {
-            const int i = geometry.bvh.prims[size_t(k)];
-            if (i < spheres ? block(geometry.spheres[size_t(i)].intersect(ray, T(0), limit))
-                            : block(geometry.triangles[size_t(i - spheres)].intersect(*basis, T(0), limit)))
-                return true;
-        }
-        return false;
+        return for_each_in_leaf(
+            geometry, a, count,
+            [&](int i) FH_HOT_LAMBDA { return block(geometry.spheres[size_t(i)].intersect(ray, T(0), limit)); },
+            [&](int k) FH_HOT_LAMBDA { return block(geometry.triangles[size_t(k)].intersect(*basis, T(0), limit)); });
     };
     if (!geometry.everything.walk_bvh) {  // a small scene: every sphere, the triangles behind their bound
         const std::vector<int>& list = geometry.everything.prims;
