@@ -23,6 +23,9 @@ struct Vec3Lanes {
         return {fh::splat(v.x), fh::splat(v.y), fh::splat(v.z)};
     }
     Vec3<T> lane(int i) const { return {x[i], y[i], z[i]}; }
+    FH_HOT_INLINE Vec3Lanes splat_lane(int i) const {
+        return {fh::splat_lane(x, i), fh::splat_lane(y, i), fh::splat_lane(z, i)};
+    }
 
     FH_HOT_INLINE Vec3Lanes& operator+=(const Vec3Lanes& o) {
         x += o.x;

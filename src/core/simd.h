@@ -99,6 +99,15 @@ FH_HOT_INLINE LaneInts<T> lane_index() {
     return r;
 }
 
+// Lane i of v in every lane: one permute, with v left in its register (an
+// element read or write by index would send it through memory).
+template <typename V>
+FH_HOT_INLINE V splat_lane(const V& v, int i) {
+    using Int = std::conditional_t<sizeof(v[0]) == 8, std::int64_t, std::int32_t>;
+    typedef Int Index __attribute__((vector_size(sizeof(V))));
+    return __builtin_shuffle(v, Index{} + Int(i));
+}
+
 // Lanes [0, n) set: a packet's first n rays.
 template <typename T>
 FH_HOT_INLINE LaneInts<T> first_lanes(int n) {
@@ -150,25 +159,37 @@ FH_HOT_INLINE bool all(const M& m) {
 }
 FH_HOT_INLINE bool all(bool m) { return m; }
 
+// Bit i set where lane i is: a mask as an integer, to visit its lanes one
+// by one (for_each_lane). One instruction where the target has one.
+template <typename M>
+FH_HOT_INLINE unsigned lane_bits(const M& m) {
+#if defined(__AVX512F__)
+    if constexpr (sizeof(M) == 64 && sizeof(m[0]) == 8) return _mm512_test_epi64_mask(__m512i(m), __m512i(m));
+    if constexpr (sizeof(M) == 64 && sizeof(m[0]) == 4) return _mm512_test_epi32_mask(__m512i(m), __m512i(m));
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(M) == 32 && sizeof(m[0]) == 8) return unsigned(_mm256_movemask_pd(__m256d(m)));
+    if constexpr (sizeof(M) == 32 && sizeof(m[0]) == 4) return unsigned(_mm256_movemask_ps(__m256(m)));
+#endif
+    constexpr int n = int(sizeof(M) / sizeof(m[0]));
+    unsigned r = 0;
+    for (int i = 0; i < n; ++i) r |= unsigned(m[i] != 0) << i;
+    return r;
+}
+
 // How many lanes are set.
 template <typename M>
 FH_HOT_INLINE int count(const M& m) {
-#if defined(__AVX512F__)
-    if constexpr (sizeof(M) == 64 && sizeof(m[0]) == 8)
-        return __builtin_popcount(_mm512_test_epi64_mask(__m512i(m), __m512i(m)));
-    if constexpr (sizeof(M) == 64 && sizeof(m[0]) == 4)
-        return __builtin_popcount(_mm512_test_epi32_mask(__m512i(m), __m512i(m)));
-#endif
-#if defined(__AVX__)
-    if constexpr (sizeof(M) == 32 && sizeof(m[0]) == 8)
-        return __builtin_popcount(unsigned(_mm256_movemask_pd(__m256d(m))));
-    if constexpr (sizeof(M) == 32 && sizeof(m[0]) == 4)
-        return __builtin_popcount(unsigned(_mm256_movemask_ps(__m256(m))));
-#endif
-    constexpr int n = int(sizeof(M) / sizeof(m[0]));
-    int c = 0;
-    for (int i = 0; i < n; ++i) c += m[i] != 0;
-    return c;
+    return __builtin_popcount(lane_bits(m));
+}
+
+// fn(i) for each set lane i, in increasing order; stops early (and returns
+// true) when fn does.
+template <typename M, typename Fn>
+FH_HOT_INLINE bool for_each_lane(const M& m, Fn&& fn) {
+    for (unsigned b = lane_bits(m); b != 0; b &= b - 1)
+        if (fn(__builtin_ctz(b))) return true;
+    return false;
 }
 
 // ---- Arithmetic, lane by lane, with scalar twins ------------------------------

@@ -26,7 +26,8 @@
 //
 // Everything runs on a packet of rays (core/packet.h); the basis across each
 // ray depends only on the ray, so a packet computes it once (RayBasis) for
-// every triangle it meets.
+// every triangle it meets. The same formula also runs on one ray against a
+// BVH leaf's triangles, a triangle per lane (geometry/triangle_block.h).
 #pragma once
 
 #include <algorithm>
@@ -57,6 +58,41 @@ struct RayBasis {
     }
 };
 
+// The test itself, lane by lane: a, b, c are a triangle's vertices taken
+// from a ray's origin, d the ray's direction, e and g its basis. Lanes hold
+// rays (Triangle::intersect: one triangle, a packet of rays) or triangles
+// (TriangleBlock: one ray, a block of triangles) -- the same operations on
+// each lane either way, so the same bits. t in (t_min, t_max), or infinity.
+template <typename T>
+FH_HOT_INLINE Lanes<T> watertight_distance(const Vec3Lanes<T>& a, const Vec3Lanes<T>& b, const Vec3Lanes<T>& c,
+                                           const Vec3Lanes<T>& d, const Vec3Lanes<T>& e, const Vec3Lanes<T>& g,
+                                           T t_min, const Lanes<T>& t_max) {
+    const Lanes<T> no_hit = splat(kInfinity<T>);
+    // Each vertex projected along the ray onto the plane of e and g (where
+    // the ray itself is the point (0, 0)). One formula for every vertex, so
+    // a shared vertex lands on the same point in each of its triangles.
+    auto along = [](const Vec3Lanes<T>& p, const Vec3Lanes<T>& q) FH_HOT_LAMBDA {
+        return mul_add(p.x, q.x, mul_add(p.y, q.y, p.z * q.z));
+    };
+    const Lanes<T> ax2 = along(a, e), ay2 = along(a, g);
+    const Lanes<T> bx2 = along(b, e), by2 = along(b, g);
+    const Lanes<T> cx2 = along(c, e), cy2 = along(c, g);
+    const Lanes<T> u = orientation(bx2, by2, cx2, cy2);
+    const Lanes<T> v = orientation(cx2, cy2, ax2, ay2);
+    const Lanes<T> w = orientation(ax2, ay2, bx2, by2);
+    const LaneInts<T> outside = ((u < T(0)) | (v < T(0)) | (w < T(0))) &
+                                ((u > T(0)) | (v > T(0)) | (w > T(0)));
+    // No lane passes: skip the division.
+    if (all(outside | (t_max <= t_min))) return no_hit;
+    // t: the vertices' distances along the ray, mixed with the edge functions
+    // as barycentric weights. For a ray that passes the test it lies between
+    // the nearest and the farthest vertex's, however nearly the ray grazes
+    // the plane; det == 0 is a ray in the plane (the projection has no area).
+    const Lanes<T> det = u + v + w;
+    const Lanes<T> t = (u * dot(a, d) + v * dot(b, d) + w * dot(c, d)) / det;
+    return select(~outside & (det != T(0)) & (t > t_min) & (t < t_max), t, no_hit);
+}
+
 template <typename T>
 struct Triangle {
     Vec3<T> v0, v1, v2;
@@ -83,38 +119,9 @@ struct Triangle {
 
     // Nearest t in (t_min, t_max) for each ray of a packet, or infinity.
     FH_HOT_INLINE Lanes<T> intersect(const RayBasis<T>& rays, T t_min, Lanes<T> t_max) const {
-        const Lanes<T> no_hit = splat(kInfinity<T>);
-        if (degenerate()) return no_hit;
-        const RayPacket<T>& ray = rays.ray;
-        // Each vertex, from the ray's origin, projected along the ray onto the
-        // plane of e and g (where the ray itself is the point (0, 0)). One
-        // formula for every vertex, so a shared vertex lands on the same
-        // point in each of its triangles.
-        auto along = [](const Vec3Lanes<T>& p, const Vec3Lanes<T>& q) FH_HOT_LAMBDA {
-            return mul_add(p.x, q.x, mul_add(p.y, q.y, p.z * q.z));
-        };
-        const Vec3Lanes<T> a = v0 - ray.origin;
-        const Vec3Lanes<T> b = v1 - ray.origin;
-        const Vec3Lanes<T> c = v2 - ray.origin;
-        const Lanes<T> ax2 = along(a, rays.e), ay2 = along(a, rays.g);
-        const Lanes<T> bx2 = along(b, rays.e), by2 = along(b, rays.g);
-        const Lanes<T> cx2 = along(c, rays.e), cy2 = along(c, rays.g);
-        const Lanes<T> u = orientation(bx2, by2, cx2, cy2);
-        const Lanes<T> v = orientation(cx2, cy2, ax2, ay2);
-        const Lanes<T> w = orientation(ax2, ay2, bx2, by2);
-        const LaneInts<T> outside = ((u < T(0)) | (v < T(0)) | (w < T(0))) &
-                                    ((u > T(0)) | (v > T(0)) | (w > T(0)));
-        // No ray of the packet passes: skip the division.
-        if (all(outside | (t_max <= t_min))) return no_hit;
-        // t: the vertices' distances along the ray, mixed with the edge
-        // functions as barycentric weights. For a ray that passes the test it
-        // lies between the nearest and the farthest vertex's, however nearly
-        // the ray grazes the plane; det == 0 is a ray in the plane (the
-        // projection has no area).
-        const Vec3Lanes<T>& d = ray.direction;
-        const Lanes<T> det = u + v + w;
-        const Lanes<T> t = (u * dot(a, d) + v * dot(b, d) + w * dot(c, d)) / det;
-        return select(~outside & (det != T(0)) & (t > t_min) & (t < t_max), t, no_hit);
+        if (degenerate()) return splat(kInfinity<T>);
+        const Vec3Lanes<T>& o = rays.ray.origin;
+        return watertight_distance<T>(v0 - o, v1 - o, v2 - o, rays.ray.direction, rays.e, rays.g, t_min, t_max);
     }
 
     // One ray: the packet formula with that ray in every lane.

@@ -50,21 +50,27 @@ struct NodeBox {
 template <typename T>
 struct alignas(8 * sizeof(T)) WalkNode {
     NodeBox<T> box;
-    // A leaf: with a >= 0, the triangles a .. a + b - 1 (renumbered in leaf
-    // order: nothing to look up between a node and its triangles); else
-    // Bvh::prims[~a ..], which may hold spheres. Inner: the second child.
+    // A leaf: with a >= 0, the triangles a .. a + count() - 1 (renumbered in
+    // leaf order: nothing to look up between a node and its triangles), also
+    // held as FlatGeometry::blocks[block()]; else Bvh::prims[~a ..], which
+    // may hold spheres. Inner: the second child.
     std::int32_t a;
-    std::int32_t b;  // a leaf: how many primitives (> 0); inner: -1 - the split axis
+    std::int32_t b;  // a leaf: count() + 16 block() (> 0); inner: -1 - the split axis
 
     bool leaf() const { return b > 0; }
+    int count() const { return b & 15; }
+    int block() const { return b >> 4; }
     int axis() const { return -1 - b; }
 };
+static_assert(kMaxLeafSize < 16, "a leaf's count takes 4 bits of WalkNode::b");
 
 // The walk's copy of a hierarchy (empty for an empty one). spheres: how
-// many of its input indices are spheres (the triangles follow them).
+// many of its input indices are spheres (the triangles follow them). The
+// leaves that hold a run of triangles number their blocks 0, 1, ... in order.
 template <typename T>
 BigArray<WalkNode<T>> walk_nodes_of(const Bvh& bvh, int spheres) {
     BigArray<WalkNode<T>> out;
+    int blocks = 0;
     if (bvh.empty()) return out;
     out.reserve(bvh.nodes.size());
     // Depth first: a node, then its first child's subtree, then its second's,
@@ -85,7 +91,7 @@ BigArray<WalkNode<T>> walk_nodes_of(const Bvh& bvh, int spheres) {
             bool run = p[0] >= spheres;
             for (int j = 1; run && j < n.count; ++j) run = p[j] == p[0] + j;
             w.a = run ? p[0] - spheres : ~n.first;
-            w.b = n.count;
+            w.b = n.count + (run ? 16 * blocks++ : 0);
         } else {
             w.b = -1 - n.axis;
             todo.push_back({n.second, index});
@@ -109,9 +115,10 @@ FH_HOT_INLINE LaneInts<T> enters(const NodeBox<T>& n, const BoxRays<T>& r, const
     return (near <= far) & (near <= t_max) & (t_max > T(0));
 }
 
-// Calls leaf(a, count) for the leaves the packet enters (a: see WalkNode), nearest first;
-// t_max is read anew at every node (the leaves shorten it). leaf returns
-// true to end the walk (every shadow ray blocked).
+// Calls leaf(node, entering) for the leaves the packet enters, nearest
+// first, with the lanes that enter it; t_max is read anew at every node
+// (the leaves shorten it). leaf returns true to end the walk (every shadow
+// ray blocked).
 template <typename T, typename Leaf>
 FH_HOT_INLINE void for_each_leaf(const BigArray<WalkNode<T>>& nodes, const RayPacket<T>& ray,
                                  const LaneInts<T>& active, const Lanes<T>& t_max, Leaf&& leaf) {
@@ -124,9 +131,10 @@ FH_HOT_INLINE void for_each_leaf(const BigArray<WalkNode<T>>& nodes, const RayPa
     while (top > 0) {
         const int i = stack[--top];
         const WalkNode<T>& n = nodes[size_t(i)];
-        if (none(enters(n.box, rays, t_max))) continue;
+        const LaneInts<T> entering = enters(n.box, rays, t_max);
+        if (none(entering)) continue;
         if (n.leaf()) {
-            if (leaf(n.a, n.b)) return;
+            if (leaf(n, entering)) return;
             continue;
         }
         // Children split along the axis: the second holds the larger coordinates.

@@ -111,6 +111,15 @@ void in_leaf_order(FlatGeometry<T>& g) {
     g.triangle_source.swap(source);
 }
 
+// The walk's nodes and blocks over g.bvh (triangles already in leaf order).
+template <typename T>
+void prepare_walk(FlatGeometry<T>& g) {
+    g.walk_nodes = walk_nodes_of<T>(g.bvh, int(g.spheres.size()));
+    g.blocks.clear();
+    for (const WalkNode<T>& n : g.walk_nodes)  // numbered in this order
+        if (n.leaf() && n.a >= 0) g.blocks.push_back(TriangleBlock<T>::make(&g.triangles[size_t(n.a)], n.count()));
+}
+
 template <typename T>
 void choose_small(const Scene& scene, FlatGeometry<T>& g) {
     g.small = g.bvh.prims.size() <= kMaxSubset;
@@ -160,7 +169,7 @@ FlatGeometry<T> FlatGeometry<T>::build(const Scene& scene, ThreadPool* pool) {
     g.bvh = build_bvh(bounds_of(scene, g.triangle_source), pool);
     choose_small(scene, g);
     if (!g.small) in_leaf_order(g);
-    g.walk_nodes = walk_nodes_of<T>(g.bvh, int(g.spheres.size()));
+    prepare_walk(g);
     return g;
 }
 
@@ -182,7 +191,7 @@ FlatGeometry<T> FlatGeometry<T>::refit(const Scene& moved, ThreadPool* pool) con
     flatten(moved, g);
     g.bvh = bvh;
     refit_bvh(g.bvh, bounds_of(moved, g.triangle_source));
-    g.walk_nodes = walk_nodes_of<T>(g.bvh, int(g.spheres.size()));
+    prepare_walk(g);
     choose_small(moved, g);
     return g;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/hit.h"
+#include "geometry/triangle_block.h"
 #include "render/bvh_traversal.h"
 #include "scene/scene.h"
 
@@ -150,6 +151,7 @@ struct FlatGeometry {
     // any other is triangle i - spheres.size().
     Bvh bvh;
     BigArray<WalkNode<T>> walk_nodes;  // bvh.nodes as the walk reads them
+    BigArray<TriangleBlock<T>> blocks;  // the triangles of the leaves that hold only triangles
     // At most kMaxSubset spheres and triangles: no BVH walk, every sphere
     // tested, the triangles behind one bounding sphere, all in id order.
     bool small = false;

@@ -1,7 +1,10 @@
 // A packet of rays against the flat scene: the nearest hit of each ray, or
 // whether anything blocks it. The shapes' own intersect functions do the
-// work (geometry/), each on the whole packet, so there is one copy of each
-// formula; they skip their costly part when no ray of the packet can hit.
+// work (geometry/), each on the whole packet -- or, in a BVH leaf of
+// triangles that fewer of the packet's rays reach than it holds, each of
+// those rays on all of the leaf's triangles at once (TriangleBlock) -- so
+// there is one copy of each formula; they skip their costly part when no
+// ray can hit.
 //
 // Lanes that are not active ask for nothing: they get an interval (0, 0),
 // which no shape can hit, so they neither count nor keep a packet from
@@ -22,21 +25,39 @@ struct HitLanes {
     LaneInts<T> prim;     // its primitive id, or kNoHit
 };
 
-// The primitives of a leaf the walk reports (a: see WalkNode), by kind:
-// sphere(i) for spheres[i], triangle(k) for triangles[k]. Either returns
-// true to stop the leaf, and then so does this.
-template <typename T, typename SphereFn, typename TriangleFn>
-FH_HOT_INLINE bool for_each_in_leaf(const FlatGeometry<T>& geometry, int a, int count, SphereFn&& sphere,
-                                    TriangleFn&& triangle) {
-    if (a >= 0) {  // a run of triangles
-        for (int k = a; k < a + count; ++k)
-            if (triangle(k)) return true;
+// The primitives of a leaf the walk reports, tested against the rays:
+//  - take(t, id): one primitive's t for the whole packet (id: its primitive id);
+//  - take_one(lane, t, id): one ray's t for a block's columns, column j
+//    being primitive id + j -- where fewer rays enter a leaf of triangles
+//    than it holds, each is tested against all of them at once instead.
+// limit() gives each ray's t_max as it stands. Either returns true to stop
+// the leaf, and then so does this.
+template <typename T, typename Limit, typename Take, typename TakeOne>
+FH_HOT_INLINE bool test_leaf(const FlatGeometry<T>& geometry, const RayBasis<T>& basis, const WalkNode<T>& n,
+                             const LaneInts<T>& entering, Limit&& limit, Take&& take, TakeOne&& take_one) {
+    const int spheres = int(geometry.spheres.size());
+    const int first_triangle = spheres + int(geometry.planes.size());  // triangle 0's primitive id
+    if (n.a >= 0) {  // a run of triangles
+        const TriangleBlock<T>& block = geometry.blocks[size_t(n.block())];
+        const int id = first_triangle + n.a;
+        if (count(entering) < n.count())
+            return for_each_lane(entering, [&](int lane) FH_HOT_LAMBDA {
+                for (int j0 = 0; j0 < n.count(); j0 += kLanes<T>) {
+                    const Lanes<T> t = block.intersect(basis, lane, j0, n.count(), T(0), splat_lane(limit(), lane));
+                    if (take_one(lane, t, id + j0)) return true;
+                }
+                return false;
+            });
+        for (int j = 0; j < n.count(); ++j)
+            if (take(block.intersect(basis, j, T(0), limit()), id + j)) return true;
         return false;
     }
-    const int spheres = int(geometry.spheres.size());
-    for (int k = ~a; k < ~a + count; ++k) {
+    for (int k = ~n.a; k < ~n.a + n.count(); ++k) {
         const int i = geometry.bvh.prims[size_t(k)];
-        if (i < spheres ? sphere(i) : triangle(i - spheres)) return true;
+        if (i < spheres ? take(geometry.spheres[size_t(i)].intersect(basis.ray, T(0), limit()), i)
+                        : take(geometry.triangles[size_t(i - spheres)].intersect(basis, T(0), limit()),
+                               first_triangle + i - spheres))
+            return true;
     }
     return false;
 }
@@ -76,21 +97,35 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const Ra
         return h;
     }
     for (int p = 0; p < planes; ++p) keep(geometry.planes[size_t(p)].intersect(ray, T(0), reach()), spheres + p);
-    auto test_leaf = [&](int a, int count) FH_HOT_LAMBDA {
+    // One ray's hits on a block's columns: the nearest, the first of equal
+    // ones, goes through keep's rule in that ray's lane alone.
+    auto keep_one = [&h](int lane, const Lanes<T>& t, int id) FH_HOT_LAMBDA {
+        T nearest = kInfinity<T>;
+        int column = 0;
+        for_each_lane(t < kInfinity<T>, [&](int j) FH_HOT_LAMBDA {
+            if (t[j] < nearest) nearest = t[j], column = j;
+            return false;
+        });
+        if (nearest == kInfinity<T>) return false;
+        const int prim = id + column;
+        const LaneInts<T> nearer =
+            (lane_index<T>() == lane) & ((nearest < h.t) | ((nearest == h.t) & (h.prim > prim)));
+        h.t = select(nearer, splat(nearest), h.t);
+        h.prim = select(nearer, LaneInts<T>{} + prim, h.prim);
+        return false;
+    };
+    auto leaf = [&](const WalkNode<T>& n, const LaneInts<T>& entering) FH_HOT_LAMBDA {
         if (!basis) basis.emplace(ray);
-        return for_each_in_leaf(
-            geometry, a, count,
-            [&](int i) FH_HOT_LAMBDA {
-                keep(geometry.spheres[size_t(i)].intersect(ray, T(0), reach()), i);
+        return test_leaf(
+            geometry, *basis, n, entering, reach,
+            [&](const Lanes<T>& t, int id) FH_HOT_LAMBDA {
+                keep(t, id);
                 return false;
             },
-            [&](int k) FH_HOT_LAMBDA {
-                keep(geometry.triangles[size_t(k)].intersect(*basis, T(0), reach()), spheres + planes + k);
-                return false;
-            });
+            keep_one);
     };
 
-    for_each_leaf(geometry.walk_nodes, ray, active, h.t, test_leaf);
+    for_each_leaf(geometry.walk_nodes, ray, active, h.t, leaf);
     return h;
 }
 
@@ -109,13 +144,18 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& geometry, const RayPac
     for (const Plane<T>& p : geometry.planes)
         if (block(p.intersect(ray, T(0), limit))) return blocked;
     const int spheres = int(geometry.spheres.size());
-    std::optional<RayBasis<T>> basis;  // built once a triangle is reached
-    auto test_leaf = [&](int a, int count) FH_HOT_LAMBDA {
+    std::optional<RayBasis<T>> basis;  // built once a leaf is reached
+    auto leaf = [&](const WalkNode<T>& n, const LaneInts<T>& entering) FH_HOT_LAMBDA {
         if (!basis) basis.emplace(ray);
-        return for_each_in_leaf(
-            geometry, a, count,
-            [&](int i) FH_HOT_LAMBDA { return block(geometry.spheres[size_t(i)].intersect(ray, T(0), limit)); },
-            [&](int k) FH_HOT_LAMBDA { return block(geometry.triangles[size_t(k)].intersect(*basis, T(0), limit)); });
+        return test_leaf(
+            geometry, *basis, n, entering, [&limit]() FH_HOT_LAMBDA { return limit; },
+            [&](const Lanes<T>& t, int) FH_HOT_LAMBDA { return block(t); },
+            [&](int lane, const Lanes<T>& t, int) FH_HOT_LAMBDA {
+                if (none(t < kInfinity<T>)) return false;
+                blocked |= lane_index<T>() == lane;
+                limit = select(blocked, splat(T(0)), limit);
+                return all(blocked | ~active);
+            });
     };
     if (!geometry.everything.walk_bvh) {  // a small scene: every sphere, the triangles behind their bound
         const std::vector<int>& list = geometry.everything.prims;
@@ -129,7 +169,7 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& geometry, const RayPac
                 return blocked;
         return blocked;
     }
-    for_each_leaf(geometry.walk_nodes, ray, active, limit, test_leaf);
+    for_each_leaf(geometry.walk_nodes, ray, active, limit, leaf);
     return blocked;
 }
 

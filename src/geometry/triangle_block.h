@@ -1,0 +1,66 @@
+// A BVH leaf's triangles, column by column: row r holds coordinate r % 3 of
+// vertex r / 3 of every triangle, so one load takes that coordinate of
+// them all. Two ways to test them, the same formula (triangle.h) either way:
+//  - a packet of rays against one column, each lane a ray;
+//  - one ray against every column, each lane a triangle: what a leaf that
+//    only one or two of a packet's rays reach wants. Over triangles smaller
+//    than a pixel the rays of a packet part ways near the leaves, and most
+//    leaves are reached by a single ray; a packet would test each triangle
+//    in turn, for one ray, where this tests them all at once.
+// Unused columns and triangles without area hold NaN, which never hits.
+#pragma once
+
+#include <limits>
+
+#include "geometry/triangle.h"
+
+namespace fh {
+
+template <typename T>
+struct alignas(64) TriangleBlock {
+    static constexpr int kColumns = 8;
+    T rows[9][kColumns];
+
+    static TriangleBlock make(const Triangle<T>* triangles, int count) {
+        TriangleBlock b;
+        for (auto& row : b.rows)
+            for (T& x : row) x = std::numeric_limits<T>::quiet_NaN();
+        for (int j = 0; j < count; ++j) {
+            const Triangle<T>& t = triangles[j];
+            if (t.degenerate()) continue;
+            const Vec3<T> v[3] = {t.v0, t.v1, t.v2};
+            for (int r = 0; r < 9; ++r) b.rows[r][j] = v[r / 3][r % 3];
+        }
+        return b;
+    }
+
+    // A packet against column j: each ray's t in (t_min, t_max), or infinity.
+    FH_HOT_INLINE Lanes<T> intersect(const RayBasis<T>& rays, int j, T t_min, const Lanes<T>& t_max) const {
+        const Vec3Lanes<T>& o = rays.ray.origin;
+        const Vec3<T> v0{rows[0][j], rows[1][j], rows[2][j]};
+        const Vec3<T> v1{rows[3][j], rows[4][j], rows[5][j]};
+        const Vec3<T> v2{rows[6][j], rows[7][j], rows[8][j]};
+        return watertight_distance<T>(v0 - o, v1 - o, v2 - o, rays.ray.direction, rays.e, rays.g, t_min, t_max);
+    }
+
+    // Ray `lane` of a packet against columns [j0, j0 + kLanes) of the first
+    // `count`: each column's t in (t_min, t_max), or infinity. (A vector
+    // wider than a row reads on into the next; those lanes are masked.)
+    // t_max: that ray's in every lane.
+    FH_HOT_INLINE Lanes<T> intersect(const RayBasis<T>& rays, int lane, int j0, int count, T t_min,
+                                     const Lanes<T>& t_max) const {
+        auto row = [&](int r) FH_HOT_LAMBDA { return load(&rows[r][j0]); };
+        const Vec3Lanes<T> o = rays.ray.origin.splat_lane(lane);
+        const Vec3Lanes<T> v0{row(0), row(1), row(2)}, v1{row(3), row(4), row(5)}, v2{row(6), row(7), row(8)};
+        const Lanes<T> limit = select(first_lanes<T>(count - j0), t_max, splat(T(0)));
+        return watertight_distance<T>(v0 - o, v1 - o, v2 - o, rays.ray.direction.splat_lane(lane),
+                                      rays.e.splat_lane(lane), rays.g.splat_lane(lane), t_min, limit);
+    }
+};
+
+// A vector load of the last row stays inside the block.
+static_assert(sizeof(TriangleBlock<float>) >= sizeof(float) * (8 * TriangleBlock<float>::kColumns + kLanes<float>));
+static_assert(sizeof(TriangleBlock<double>) >=
+              sizeof(double) * (8 * TriangleBlock<double>::kColumns + kLanes<double>));
+
+}  // namespace fh
