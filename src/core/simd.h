@@ -103,9 +103,13 @@ FH_HOT_INLINE LaneInts<T> lane_index() {
 // element read or write by index would send it through memory).
 template <typename V>
 FH_HOT_INLINE V splat_lane(const V& v, int i) {
-    using Int = std::conditional_t<sizeof(v[0]) == 8, std::int64_t, std::int32_t>;
+#if defined(__clang__)  // no variable-index shuffle builtin
+    return V{} + v[i];
+#else
+    using Int = std::conditional_t<sizeof(ScalarOf<V>) == 8, std::int64_t, std::int32_t>;
     typedef Int Index __attribute__((vector_size(sizeof(V))));
     return __builtin_shuffle(v, Index{} + Int(i));
+#endif
 }
 
 // Lanes [0, n) set: a packet's first n rays.
