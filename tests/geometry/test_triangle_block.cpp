@@ -58,7 +58,7 @@ RayPacket<T> rays_at(std::mt19937& rng, const std::vector<Triangle<T>>& tris) {
 template <typename T>
 void expect_block_equals_triangles() {
     std::mt19937 rng(11);
-    int hits = 0;
+    int hits = 0, tests = 0;
     for (int round = 0; round < 4000; ++round) {
         const int count = 1 + round % TriangleBlock<T>::kColumns;
         const std::vector<Triangle<T>> tris = fan<T>(rng, count, round % 5 == 0);
@@ -73,6 +73,7 @@ void expect_block_equals_triangles() {
             for (int l = 0; l < kLanes<T>; ++l) {
                 ASSERT_TRUE(same_bits(packet[l], want[l])) << "column " << j << " lane " << l;
                 hits += want[l] < kInfinity<T>;
+                ++tests;
             }
         }
         for (int l = 0; l < kLanes<T>; ++l)
@@ -89,7 +90,7 @@ void expect_block_equals_triangles() {
                 }
             }
     }
-    EXPECT_GT(hits, 10000);  // the rays do meet the triangles
+    EXPECT_GT(hits, tests / 20);  // the rays do meet the triangles (about 1 test in 8)
 }
 
 TEST(TriangleBlock, FloatTestsGiveEachTrianglesOwnBits) { expect_block_equals_triangles<float>(); }
