@@ -98,20 +98,16 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const Ra
     }
     for (int p = 0; p < planes; ++p) keep(geometry.planes[size_t(p)].intersect(ray, T(0), reach()), spheres + p);
     // One ray's hits on a block's columns: the nearest, the first of equal
-    // ones, goes through keep's rule in that ray's lane alone.
-    auto keep_one = [&h](int lane, const Lanes<T>& t, int id) FH_HOT_LAMBDA {
+    // ones, goes through keep in that ray's lane alone (infinity, the others).
+    auto keep_one = [&](int lane, const Lanes<T>& t, int id) FH_HOT_LAMBDA {
         T nearest = kInfinity<T>;
         int column = 0;
         for_each_lane(t < kInfinity<T>, [&](int j) FH_HOT_LAMBDA {
             if (t[j] < nearest) nearest = t[j], column = j;
             return false;
         });
-        if (nearest == kInfinity<T>) return false;
-        const int prim = id + column;
-        const LaneInts<T> nearer =
-            (lane_index<T>() == lane) & ((nearest < h.t) | ((nearest == h.t) & (h.prim > prim)));
-        h.t = select(nearer, splat(nearest), h.t);
-        h.prim = select(nearer, LaneInts<T>{} + prim, h.prim);
+        if (nearest < kInfinity<T>)
+            keep(select(lane_index<T>() == lane, splat(nearest), splat(kInfinity<T>)), id + column);
         return false;
     };
     auto leaf = [&](const WalkNode<T>& n, const LaneInts<T>& entering) FH_HOT_LAMBDA {
