@@ -18,7 +18,8 @@ namespace fh {
 
 template <typename T>
 struct alignas(64) TriangleBlock {
-    static constexpr int kColumns = 8;
+    // As many columns as one vector holds (16 floats with AVX-512), at least 8.
+    static constexpr int kColumns = kLanes<T> > 8 ? 16 : 8;
     T rows[9][kColumns];
 
     static TriangleBlock make(const Triangle<T>* triangles, int count) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "render/thread_pool.h"
 
@@ -18,9 +20,13 @@ constexpr int kSubtreeSize = 32768;
 // whatever the input (coincident boxes give the heuristic nothing to split).
 constexpr int kMaxSahDepth = 96;
 // The cost of visiting a node against that of testing one primitive: a
-// packet's watertight triangle test costs several box tests. Measured on
-// the scaling family (20k to 1.3M triangles): 4 beats 1, 2 and 8.
-constexpr double kTraversalCost = 4.0;
+// packet's watertight triangle test costs several box tests, but a leaf
+// that one ray of a packet reaches tests all its triangles in one vector
+// (geometry/triangle_block.h). Measured since that test, on the scaling
+// family (1,280 to 1.3M triangles) and the bunny, with the leaf sizes the
+// tracers ask for (render/flat_geometry.cpp): in float 8 beats 5, 6, 12 and
+// 16; in double it is as fast as 4 and 6, or a little faster.
+constexpr double kTraversalCost = 8.0;
 
 float round_down(double v) {
     float f = float(v);
@@ -73,8 +79,8 @@ struct Pending {
 class Builder {
 public:
     Builder(const std::vector<Aabb>& boxes, const std::vector<dvec3>& centroids, BigArray<std::int32_t>& prims,
-            ThreadPool* pool)
-        : boxes_(boxes), centroids_(centroids), prims_(prims), pool_(pool) {}
+            int max_leaf, ThreadPool* pool)
+        : boxes_(boxes), centroids_(centroids), prims_(prims), max_leaf_(max_leaf), pool_(pool) {}
 
     // Builds [begin, end) into nodes (its root at the returned index); with
     // defer, ranges smaller than kSubtreeSize go to `pending` instead.
@@ -91,7 +97,7 @@ public:
         const double leaf_cost = double(n);
         const double split_cost =
             split.axis < 0 ? kInfinity<double> : kTraversalCost + split.cost / std::max(bounds.half_area(), 1e-300);
-        if (n <= kMaxLeafSize && (split.axis < 0 || leaf_cost <= split_cost)) {
+        if (n <= max_leaf_ && (split.axis < 0 || leaf_cost <= split_cost)) {
             nodes[size_t(index)].first = begin;
             nodes[size_t(index)].count = n;
             return index;
@@ -202,12 +208,16 @@ private:
     const std::vector<Aabb>& boxes_;
     const std::vector<dvec3>& centroids_;
     BigArray<std::int32_t>& prims_;
+    int max_leaf_;
     ThreadPool* pool_;
 };
 
 }  // namespace
 
-Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool) {
+Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool, int max_leaf) {
+    if (max_leaf < 1 || max_leaf > kMaxLeafSize)
+        throw std::invalid_argument("build_bvh: max_leaf " + std::to_string(max_leaf) + " is not in 1.." +
+                                    std::to_string(kMaxLeafSize));
     const auto start = std::chrono::steady_clock::now();
     Bvh bvh;
     std::vector<dvec3> centroids(boxes.size());
@@ -216,7 +226,7 @@ Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool) {
         if (!boxes[i].empty()) bvh.prims.push_back(std::int32_t(i));
     }
     if (bvh.prims.empty()) return bvh;
-    Builder builder(boxes, centroids, bvh.prims, pool);
+    Builder builder(boxes, centroids, bvh.prims, max_leaf, pool);
     Aabb bounds, centroid_bounds;
     builder.range_bounds(0, int(bvh.prims.size()), bounds, centroid_bounds);
 

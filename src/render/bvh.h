@@ -60,12 +60,15 @@ struct Bvh {
     bool empty() const { return nodes.empty(); }
 };
 
-// Largest leaf; a leaf is made earlier where splitting costs more than it saves.
-inline constexpr int kMaxLeafSize = 8;
+// The largest leaf any build may make (the walk keeps a leaf's count in 4
+// bits, render/bvh_traversal.h).
+inline constexpr int kMaxLeafSize = 15;
 
 // The hierarchy over boxes[0 .. n). Boxes that are empty (a degenerate input)
-// are left out. pool == nullptr builds on the calling thread.
-Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool);
+// are left out. pool == nullptr builds on the calling thread. A leaf holds
+// at most max_leaf (1 .. kMaxLeafSize) primitives, and fewer where
+// splitting costs less than it saves.
+Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool, int max_leaf = 8);
 
 // The same tree over new boxes of the same primitives (they moved): every
 // node's box recomputed bottom-up, the topology kept. Cheaper than a build

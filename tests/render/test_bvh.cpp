@@ -223,7 +223,8 @@ TEST(Bvh, EveryBoxInOneLeafInsideEveryBoxAboveIt) {
             b.grow(b.lo + dvec3(size(rng), size(rng), size(rng)));
         }
         for (ThreadPool* p : {static_cast<ThreadPool*>(nullptr), &pool}) {
-            const Bvh bvh = build_bvh(boxes, p);
+            const int max_leaf = p ? kMaxLeafSize : 8;  // the double tracer's and the largest
+            const Bvh bvh = build_bvh(boxes, p, max_leaf);
             std::vector<int> seen(static_cast<size_t>(n), 0);
             auto inside = [](const BvhNode& outer, const Aabb& b) {
                 for (int a = 0; a < 3; ++a)
@@ -231,9 +232,11 @@ TEST(Bvh, EveryBoxInOneLeafInsideEveryBoxAboveIt) {
                 return true;
             };
             long bad = 0;
+            int largest = 0;
             for (const BvhNode& node : bvh.nodes) {
                 if (node.leaf()) {
-                    EXPECT_LE(node.count, kMaxLeafSize);
+                    EXPECT_LE(node.count, max_leaf);
+                    largest = std::max(largest, node.count);
                     for (int k = node.first; k < node.first + node.count; ++k) {
                         const int i = bvh.prims[size_t(k)];
                         ++seen[size_t(i)];
@@ -249,6 +252,20 @@ TEST(Bvh, EveryBoxInOneLeafInsideEveryBoxAboveIt) {
             }
             EXPECT_EQ(bad, 0) << n;
             EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), n) << n;
+            if (n == 7) EXPECT_EQ(largest, 7) << "seven boxes: one leaf, not worth a split";
+        }
+    }
+}
+
+TEST(Bvh, LeafLimitOutsideWhatTheWalkHoldsIsRefused) {
+    const std::vector<Aabb> boxes{{dvec3(0), dvec3(1)}};
+    EXPECT_EQ(build_bvh(boxes, nullptr, kMaxLeafSize).nodes.size(), 1u);
+    for (const int max_leaf : {0, kMaxLeafSize + 1}) {
+        try {
+            build_bvh(boxes, nullptr, max_leaf);
+            ADD_FAILURE() << max_leaf;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_EQ(std::string(e.what()), "build_bvh: max_leaf " + std::to_string(max_leaf) + " is not in 1..15");
         }
     }
 }
