@@ -68,7 +68,7 @@ inline constexpr int kMaxLeafSize = 15;
 // are left out. pool == nullptr builds on the calling thread. A leaf holds
 // at most max_leaf (1 .. kMaxLeafSize) primitives, and fewer where
 // splitting costs less than it saves.
-Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool, int max_leaf = 8);
+Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool, int max_leaf);
 
 // The same tree over new boxes of the same primitives (they moved): every
 // node's box recomputed bottom-up, the topology kept. Cheaper than a build
