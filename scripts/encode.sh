@@ -207,8 +207,26 @@ esac
 # The muxer is named (-f): the temporary's extension does not pick it.
 tmp="$outdir/.$name.tmp-$$.$ext"
 trap 'rm -f "$tmp"' EXIT
+# ffmpeg runs in the background and is waited for, so that a signal to this
+# script stops it too, and the file goes only once ffmpeg has stopped: a
+# stopping ffmpeg still finishes its output, and may even create it, after
+# an earlier rm (make_movies.sh's SIGTERM test once found one left behind).
+encoder=""
+stop() {
+  if [[ -n $encoder ]]; then
+    kill -TERM "$encoder" 2>/dev/null || true
+    wait "$encoder" 2>/dev/null || true
+  fi
+  exit "$1"
+}
+trap 'stop 130' INT
+trap 'stop 143' TERM
+trap 'stop 129' HUP
 ffmpeg -hide_banner -loglevel error -nostdin -y "${input[@]}" \
-  "${filter[@]}" "${codec[@]}" -f "$ext" "$tmp"
+  "${filter[@]}" "${codec[@]}" -f "$ext" "$tmp" <&0 &
+encoder=$!
+wait "$encoder"
+trap - INT TERM HUP
 # (ffmpeg may end well having written nothing: a GIF of no frames.)
 [[ -s $tmp ]] || { echo "encode.sh: error: ffmpeg wrote nothing into $out: no frames?" >&2; exit 1; }
 mv -f "$tmp" "$out"

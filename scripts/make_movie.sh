@@ -45,6 +45,12 @@ mkdir -p "$outdir"
 # a render that fails half-way leaves no half movie.
 tmp="$outdir/.$name.mp4.tmp-$$.mp4"
 trap 'rm -f "$tmp"' EXIT
+# A trapped signal waits for the pipeline (stopped by the same signal, or by
+# encode.sh's) before the EXIT trap removes the movie: encode.sh may still
+# be moving its file into place.
+trap 'exit 130' INT
+trap 'exit 143' TERM
+trap 'exit 129' HUP
 "$firsthit" frames "$movie" --out "$outdir/$name" --raw-video - "${frames_options[@]}" \
   | "$here/encode.sh" --raw "$size" "$tmp" --fps "$fps" "${encode_options[@]}" >/dev/null
 mv -f "$tmp" "$outdir/$name.mp4"
