@@ -45,9 +45,10 @@ mkdir -p "$outdir"
 # a render that fails half-way leaves no half movie.
 tmp="$outdir/.$name.mp4.tmp-$$.mp4"
 trap 'rm -f "$tmp"' EXIT
-# A trapped signal waits for the pipeline (stopped by the same signal, or by
-# encode.sh's) before the EXIT trap removes the movie: encode.sh may still
-# be moving its file into place.
+# A trapped signal is acted on only once the pipeline has ended -- stopped
+# by the same signal where it reached the whole group (Ctrl-C,
+# make_movies.sh) -- so the EXIT trap removes the movie after encode.sh has
+# stopped, not while it may still be moving its file into place.
 trap 'exit 130' INT
 trap 'exit 143' TERM
 trap 'exit 129' HUP
