@@ -125,7 +125,6 @@ constexpr int kLeafTriangles = std::min(TriangleBlock<T>::kColumns, kMaxLeafSize
 // The walk's nodes and blocks over g.bvh (triangles already in leaf order).
 template <typename T>
 void prepare_walk(FlatGeometry<T>& g) {
-    static_assert(kLeafTriangles<T> <= TriangleBlock<T>::kColumns, "a leaf's triangles fit one block");
     g.walk_nodes = walk_nodes_of<T>(g.bvh, int(g.spheres.size()));
     g.blocks.clear();
     for (const WalkNode<T>& n : g.walk_nodes)  // numbered in this order

@@ -146,6 +146,9 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& geometry, const RayPac
         return test_leaf(
             geometry, *basis, n, entering, [&limit]() FH_HOT_LAMBDA { return limit; },
             [&](const Lanes<T>& t, int) FH_HOT_LAMBDA { return block(t); },
+            // block()'s body for one lane, written out: routing it through a
+            // helper that block() shares gave the same frames but measured
+            // 2-3% slower on the bunny in double, twice (GCC's inlining).
             [&](int lane, const Lanes<T>& t, int) FH_HOT_LAMBDA {
                 if (none(t < kInfinity<T>)) return false;
                 blocked |= lane_index<T>() == lane;
