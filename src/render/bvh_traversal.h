@@ -52,7 +52,8 @@ struct alignas(8 * sizeof(T)) WalkNode {
     NodeBox<T> box;
     // A leaf: with a >= 0, the triangles a .. a + count() - 1 (renumbered in
     // leaf order: nothing to look up between a node and its triangles), also
-    // held as FlatGeometry::blocks[block()]; else Bvh::prims[~a ..], which
+    // held column by column (FlatGeometry::blocks[block()] in double,
+    // packed_rows in float); else Bvh::prims[~a ..], which
     // may hold spheres. Inner: the second child.
     std::int32_t a;
     std::int32_t b;  // a leaf: count() + 16 block() (> 0); inner: -1 - the split axis

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace fh {
 
@@ -127,6 +128,16 @@ template <typename T>
 void prepare_walk(FlatGeometry<T>& g) {
     g.walk_nodes = walk_nodes_of<T>(g.bvh, int(g.spheres.size()));
     g.blocks.clear();
+    g.packed_rows.clear();
+    if constexpr (FlatGeometry<T>::kPackedRows) {
+        // A vector of NaN past the last row: the one-ray test reads that far.
+        g.packed_rows.assign(9 * g.triangles.size() + kLanes<T>, std::numeric_limits<T>::quiet_NaN());
+        for (const WalkNode<T>& n : g.walk_nodes)
+            if (n.leaf() && n.a >= 0)
+                TriangleRows<T>::write(&g.triangles[size_t(n.a)], n.count(), n.count(),
+                                       &g.packed_rows[9 * size_t(n.a)]);
+        return;
+    }
     for (const WalkNode<T>& n : g.walk_nodes)  // numbered in this order
         if (n.leaf() && n.a >= 0) g.blocks.push_back(TriangleBlock<T>::make(&g.triangles[size_t(n.a)], n.count()));
 }

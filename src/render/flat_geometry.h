@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "core/hit.h"
@@ -151,7 +152,9 @@ struct FlatGeometry {
     // any other is triangle i - spheres.size().
     Bvh bvh;
     BigArray<WalkNode<T>> walk_nodes;  // bvh.nodes as the walk reads them
-    BigArray<TriangleBlock<T>> blocks;  // the triangles of the leaves that hold only triangles
+    // The triangles of the leaves that hold only triangles, a block a leaf
+    // (in double; float packs them in packed_rows below).
+    BigArray<TriangleBlock<T>> blocks;
     // At most kMaxSubset spheres and triangles: no BVH walk, every sphere
     // tested, the triangles behind one bounding sphere, all in id order.
     bool small = false;
@@ -164,6 +167,16 @@ struct FlatGeometry {
     // triangles[k] is the Scene's triangles[triangle_source[k]]: a refit
     // reads the moved triangles in the same order.
     std::vector<std::int32_t> triangle_source;
+    // In float, the leaves' triangles (those `blocks` holds in double) with
+    // their rows packed: a leaf of count triangles from triangle a on has
+    // row r at 9 a + r count, so no column is left unused (a float block
+    // has 16, a leaf 10.5 on average). 3-4% faster in float from 1,280 to
+    // 1.3 million triangles. Double keeps blocks, whose rows are cache
+    // lines: packed, they straddle lines, and the bunny was 3% slower.
+    // (Last in the struct, so that double's code, which never reads it,
+    // stays as it was.)
+    BigArray<T> packed_rows;
+    static constexpr bool kPackedRows = std::is_same_v<T, float>;
 
     // pool: the BVH is built on it (nullptr: on the calling thread).
     static FlatGeometry build(const Scene& scene, ThreadPool* pool = nullptr);
@@ -173,6 +186,11 @@ struct FlatGeometry {
     // that is not possible -- a primitive appeared or vanished, a triangle
     // lost its area -- the geometry is built anew instead.
     FlatGeometry refit(const Scene& moved, ThreadPool* pool = nullptr) const;
+
+    // A leaf's packed rows (kPackedRows; n: a run of triangles, n.a >= 0).
+    FH_HOT_INLINE TriangleRows<T> packed_rows_of(const WalkNode<T>& n) const {
+        return {&packed_rows[9 * size_t(n.a)], n.count()};
+    }
 
     Hit<T> hit_of(T t, int prim) const {
         const int ns = int(spheres.size()), np = int(planes.size());

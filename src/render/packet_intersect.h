@@ -37,20 +37,40 @@ FH_HOT_INLINE bool test_leaf(const FlatGeometry<T>& geometry, const RayBasis<T>&
                              const LaneInts<T>& entering, Limit&& limit, Take&& take, TakeOne&& take_one) {
     const int spheres = int(geometry.spheres.size());
     const int first_triangle = spheres + int(geometry.planes.size());  // triangle 0's primitive id
-    if (n.a >= 0) {  // a run of triangles
-        const TriangleBlock<T>& block = geometry.blocks[size_t(n.block())];
-        const int id = first_triangle + n.a;
-        if (count(entering) < n.count())
-            return for_each_lane(entering, [&](int lane) FH_HOT_LAMBDA {
-                for (int j0 = 0; j0 < n.count(); j0 += kLanes<T>) {
-                    const Lanes<T> t = block.intersect(basis, lane, j0, n.count(), T(0), splat_lane(limit(), lane));
-                    if (take_one(lane, t, id + j0)) return true;
-                }
-                return false;
-            });
-        for (int j = 0; j < n.count(); ++j)
-            if (take(block.intersect(basis, j, T(0), limit()), id + j)) return true;
-        return false;
+    // A run of triangles: the same lines twice, on float's packed rows and
+    // on double's blocks. Written once (a generic lambda taking either), the
+    // double tracer compiles to different machine code; written out, it is
+    // byte for byte what it was before packed rows (objdump).
+    if (n.a >= 0) {
+        if constexpr (FlatGeometry<T>::kPackedRows) {
+            const TriangleRows<T> block = geometry.packed_rows_of(n);
+            const int id = first_triangle + n.a;
+            if (count(entering) < n.count())
+                return for_each_lane(entering, [&](int lane) FH_HOT_LAMBDA {
+                    for (int j0 = 0; j0 < n.count(); j0 += kLanes<T>) {
+                        const Lanes<T> t = block.intersect(basis, lane, j0, n.count(), T(0), splat_lane(limit(), lane));
+                        if (take_one(lane, t, id + j0)) return true;
+                    }
+                    return false;
+                });
+            for (int j = 0; j < n.count(); ++j)
+                if (take(block.intersect(basis, j, T(0), limit()), id + j)) return true;
+            return false;
+        } else {
+            const TriangleBlock<T>& block = geometry.blocks[size_t(n.block())];
+            const int id = first_triangle + n.a;
+            if (count(entering) < n.count())
+                return for_each_lane(entering, [&](int lane) FH_HOT_LAMBDA {
+                    for (int j0 = 0; j0 < n.count(); j0 += kLanes<T>) {
+                        const Lanes<T> t = block.intersect(basis, lane, j0, n.count(), T(0), splat_lane(limit(), lane));
+                        if (take_one(lane, t, id + j0)) return true;
+                    }
+                    return false;
+                });
+            for (int j = 0; j < n.count(); ++j)
+                if (take(block.intersect(basis, j, T(0), limit()), id + j)) return true;
+            return false;
+        }
     }
     for (int k = ~n.a; k < ~n.a + n.count(); ++k) {
         const int i = geometry.bvh.prims[size_t(k)];

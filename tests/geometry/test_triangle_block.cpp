@@ -1,7 +1,8 @@
-// TriangleBlock: a leaf's triangles in columns. Both of its tests -- a
-// packet against one column, one ray against all columns -- must give each
-// ray and triangle exactly the bits Triangle::intersect gives, or the BVH
-// walk's answer would depend on how many rays of a packet reach a leaf.
+// TriangleBlock and TriangleRows: a leaf's triangles in columns, rows a
+// vector long or packed. Both of their tests -- a packet against one
+// column, one ray against all columns -- must give each ray and triangle
+// exactly the bits Triangle::intersect gives, or the BVH walk's answer would
+// depend on how many rays of a packet reach a leaf.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -55,21 +56,27 @@ RayPacket<T> rays_at(std::mt19937& rng, const std::vector<Triangle<T>>& tris) {
     return p;
 }
 
+// packed: the rows as TriangleRows packs them (a row as long as the leaf,
+// followed by zeros that a vector past the last row reads); else a block.
 template <typename T>
-void expect_block_equals_triangles() {
+void expect_columns_equal_triangles(bool packed) {
     std::mt19937 rng(11);
     int hits = 0, tests = 0;
     for (int round = 0; round < 4000; ++round) {
         const int count = 1 + round % TriangleBlock<T>::kColumns;
         const std::vector<Triangle<T>> tris = fan<T>(rng, count, round % 5 == 0);
         const TriangleBlock<T> block = TriangleBlock<T>::make(tris.data(), count);
+        std::vector<T> storage(size_t(9 * count + kLanes<T>), T(0));
+        TriangleRows<T>::write(tris.data(), count, count, storage.data());
+        const TriangleRows<T> rows{storage.data(), count};
+        auto intersect = [&](auto... args) { return packed ? rows.intersect(args...) : block.intersect(args...); };
         const RayPacket<T> ray = rays_at(rng, tris);
         const RayBasis<T> basis(ray);
         Lanes<T> t_max;
         for (int l = 0; l < kLanes<T>; ++l) t_max[l] = l % 4 == 3 ? T(3.5) : kInfinity<T>;  // some cut short
         for (int j = 0; j < count; ++j) {
             const Lanes<T> want = tris[size_t(j)].intersect(basis, T(0), t_max);
-            const Lanes<T> packet = block.intersect(basis, j, T(0), t_max);
+            const Lanes<T> packet = intersect(basis, j, T(0), t_max);
             for (int l = 0; l < kLanes<T>; ++l) {
                 ASSERT_TRUE(same_bits(packet[l], want[l])) << "column " << j << " lane " << l;
                 hits += want[l] < kInfinity<T>;
@@ -78,10 +85,10 @@ void expect_block_equals_triangles() {
         }
         for (int l = 0; l < kLanes<T>; ++l)
             for (int j0 = 0; j0 < count; j0 += kLanes<T>) {
-                const Lanes<T> one = block.intersect(basis, l, j0, count, T(0), splat(t_max[l]));
+                const Lanes<T> one = intersect(basis, l, j0, count, T(0), splat(t_max[l]));
                 for (int c = 0; c < kLanes<T>; ++c) {
                     const int j = j0 + c;
-                    if (j >= count) {  // past the block's triangles: nothing
+                    if (j >= count) {  // past the leaf's triangles: nothing
                         ASSERT_EQ(one[c], kInfinity<T>);
                         continue;
                     }
@@ -93,8 +100,10 @@ void expect_block_equals_triangles() {
     EXPECT_GT(hits, tests / 20);  // the rays do meet the triangles (about 1 test in 8)
 }
 
-TEST(TriangleBlock, FloatTestsGiveEachTrianglesOwnBits) { expect_block_equals_triangles<float>(); }
-TEST(TriangleBlock, DoubleTestsGiveEachTrianglesOwnBits) { expect_block_equals_triangles<double>(); }
+TEST(TriangleBlock, FloatTestsGiveEachTrianglesOwnBits) { expect_columns_equal_triangles<float>(false); }
+TEST(TriangleBlock, DoubleTestsGiveEachTrianglesOwnBits) { expect_columns_equal_triangles<double>(false); }
+TEST(TriangleRows, FloatPackedTestsGiveEachTrianglesOwnBits) { expect_columns_equal_triangles<float>(true); }
+TEST(TriangleRows, DoublePackedTestsGiveEachTrianglesOwnBits) { expect_columns_equal_triangles<double>(true); }
 
 TEST(TriangleBlock, ATriangleWithoutAreaAndUnusedColumnsNeverHit) {
     const Triangle<double> flat = Triangle<double>::make({0, 0, 0}, {1, 0, 0}, {2, 0, 0}, 0);
