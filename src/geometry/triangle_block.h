@@ -75,12 +75,7 @@ struct alignas(64) TriangleBlock {
         TriangleBlock b;
         for (auto& row : b.rows)
             for (T& x : row) x = std::numeric_limits<T>::quiet_NaN();
-        for (int j = 0; j < count; ++j) {
-            const Triangle<T>& t = triangles[j];
-            if (t.degenerate()) continue;
-            const Vec3<T> v[3] = {t.v0, t.v1, t.v2};
-            for (int r = 0; r < 9; ++r) b.rows[r][j] = v[r / 3][r % 3];
-        }
+        TriangleRows<T>::write(triangles, count, kColumns, &b.rows[0][0]);
         return b;
     }
 

@@ -128,7 +128,6 @@ template <typename T>
 void prepare_walk(FlatGeometry<T>& g) {
     g.walk_nodes = walk_nodes_of<T>(g.bvh, int(g.spheres.size()));
     g.blocks.clear();
-    g.packed_rows.clear();
     if constexpr (FlatGeometry<T>::kPackedRows) {
         // A vector of NaN past the last row: the one-ray test reads that far.
         g.packed_rows.assign(9 * g.triangles.size() + kLanes<T>, std::numeric_limits<T>::quiet_NaN());
