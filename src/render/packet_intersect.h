@@ -129,9 +129,10 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const Ra
         });
         if (nearest < kInfinity<T>) {
             // Shading reads the hit's surface right after the walk; among a
-            // million triangles that read missed the cache (7% of the frame's
+            // million triangles that read missed the cache (7% of the trace's
             // samples in perf). Asked for now, it arrives while the walk goes
-            // on. Both ends: a 40-byte surface may straddle two lines.
+            // on. Both ends: a surface (40 bytes in float, 72 in double) may
+            // straddle two cache lines.
             const PrimitiveSurface<T>* s = &geometry.surfaces[size_t(id + column)];
             __builtin_prefetch(s);
             __builtin_prefetch(reinterpret_cast<const char*>(s + 1) - 1);
