@@ -93,6 +93,7 @@ public:
         const int index = int(nodes.size());
         nodes.push_back(node_with_box(bounds));
         const int n = end - begin;
+        nodes[size_t(index)].below = n;
         const Split split = depth < kMaxSahDepth ? best_split(begin, end, centroids, defer) : Split{};
         const double leaf_cost = double(n);
         const double split_cost =

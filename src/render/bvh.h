@@ -46,6 +46,7 @@ struct BvhNode {
     std::int32_t second = 0;
     std::int32_t count = 0;
     std::int32_t axis = 0;  // inner: the split axis, for front-to-back order
+    std::int32_t below = 0;  // how many primitives the subtree holds (a tile's culling gives up early)
 
     bool leaf() const { return count > 0; }
 };

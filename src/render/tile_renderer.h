@@ -177,7 +177,7 @@ FrameResult render_frame_as(const FlatScene<T>& flat, const Camera& camera, cons
     std::vector<PaddedCounts> counts(workers);
     // Each tile's camera rays hit only what its frustum reaches (computed in
     // double: render/tile_culling.h); per worker, reused from tile to tile.
-    const CameraRays<double> frustum_rays(camera);
+    const TileSides sides(CameraRays<double>(camera), camera.width, camera.height, kTileSize);
     std::vector<PrimitiveSubset> subsets(workers);
     auto run = [&](int tasks, const std::function<void(int, int)>& fn) {
         if (pool) pool->parallel_for(tasks, fn);
@@ -193,7 +193,7 @@ FrameResult render_frame_as(const FlatScene<T>& flat, const Camera& camera, cons
             const int x0 = (t % tiles_x) * kTileSize, y0 = (t / tiles_x) * kTileSize;
             const int x1 = std::min(x0 + kTileSize, camera.width), y1 = std::min(y0 + kTileSize, camera.height);
             PrimitiveSubset& visible = subsets[size_t(worker)];
-            cull_to_frustum(*flat.geometry, TileFrustum(frustum_rays, x0, x1, y0, y1), visible);
+            cull_to_frustum(*flat.geometry, sides.frustum(x0, x1, y0, y1), visible);
             if (settings.samples_per_pixel == 1) {
                 render_centres<T>(shader, camera_rays, x0, x1, y0, y1, &visible, result.image, c);
                 return;
