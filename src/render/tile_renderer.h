@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <functional>
+#include <utility>
 
 #include "render/adaptive.h"
 #include "render/render.h"
@@ -39,6 +41,22 @@ FH_HOT_INLINE typename WideLanes<T>::Bytes to_bytes(const Lanes<T>& v) {
     using W = WideLanes<T>;
     const typename W::Doubles d = __builtin_convertvector(v, typename W::Doubles) + 0.5;
     return __builtin_convertvector(__builtin_convertvector(d, typename W::Ints), typename W::Bytes);
+}
+
+// A whole block's bytes in the image's order -- R G B of each pixel, the
+// block's rows one after another -- by shuffles, not 3 W single-byte
+// moves: bytes[ch] lane k is channel ch of the block's pixel k, and byte
+// 3k + ch of the result is that (the last W bytes are padding).
+template <int W, size_t... K>  // K: 0 .. 4 W - 1
+FH_HOT_INLINE auto pick_rgb(const auto& rg, const auto& bb, std::index_sequence<K...>) {
+    return __builtin_shufflevector(rg, bb, (K < 3 * W ? (K % 3) * W + K / 3 : 0)...);
+}
+template <int W, typename Bytes, size_t... K>  // K: 0 .. 2 W - 1
+FH_HOT_INLINE auto interleave_rgb(const Bytes (&bytes)[3], std::index_sequence<K...>) {
+    // Red then green, and blue twice: byte ch W + k of the pair is bytes[ch][k].
+    const auto rg = __builtin_shufflevector(bytes[0], bytes[1], K...);
+    const auto bb = __builtin_shufflevector(bytes[2], bytes[2], (K % W)...);
+    return pick_rgb<W>(rg, bb, std::make_index_sequence<4 * W>{});
 }
 
 // The clamped colour of each sample (SPEC section 4), lane by lane; a sample
@@ -90,10 +108,16 @@ void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1
         counts.primary += std::uint64_t(b.nx * b.ny);
         const ColorLanes<T> c = clamp_samples(shader.trace(rays, active, counts, visible), active, counts);
         const typename WideLanes<T>::Bytes bytes[3] = {to_bytes<T>(c.x), to_bytes<T>(c.y), to_bytes<T>(c.z)};
-        for (int j = 0; j < b.ny; ++j) {
-            std::uint8_t* out = image.pixel(b.x, b.y + j);
-            for (int i = 0; i < b.nx; ++i)
-                for (int ch = 0; ch < 3; ++ch) out[3 * i + ch] = bytes[ch][j * BW + i];
+        if (b.nx == BW && b.ny == BH) {
+            const auto rgb = interleave_rgb<W>(bytes, std::make_index_sequence<2 * W>{});
+            for (int j = 0; j < BH; ++j)
+                std::memcpy(image.pixel(b.x, b.y + j), reinterpret_cast<const std::uint8_t*>(&rgb) + 3 * BW * j, 3 * BW);
+        } else {  // a block cut by the tile's edge
+            for (int j = 0; j < b.ny; ++j) {
+                std::uint8_t* out = image.pixel(b.x, b.y + j);
+                for (int i = 0; i < b.nx; ++i)
+                    for (int ch = 0; ch < 3; ++ch) out[3 * i + ch] = bytes[ch][j * BW + i];
+            }
         }
         rays = next;
     }
