@@ -110,8 +110,8 @@ void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1
         const typename WideLanes<T>::Bytes bytes[3] = {to_bytes<T>(c.x), to_bytes<T>(c.y), to_bytes<T>(c.z)};
         if (b.nx == BW && b.ny == BH) {
             const auto rgb = interleave_rgb<W>(bytes, std::make_index_sequence<2 * W>{});
-            for (int j = 0; j < BH; ++j)
-                std::memcpy(image.pixel(b.x, b.y + j), reinterpret_cast<const std::uint8_t*>(&rgb) + 3 * BW * j, 3 * BW);
+            const auto* row = reinterpret_cast<const std::uint8_t*>(&rgb);
+            for (int j = 0; j < BH; ++j) std::memcpy(image.pixel(b.x, b.y + j), row + 3 * BW * j, 3 * BW);
         } else {  // a block cut by the tile's edge
             for (int j = 0; j < b.ny; ++j) {
                 std::uint8_t* out = image.pixel(b.x, b.y + j);

@@ -58,8 +58,9 @@ TEST(TileCulling, KeepsEverySphereATilesRayHits) {
             const bool hits = some_ray_hits(rays, x0, x0 + 16, y0, y0 + 16, s);
             if (hits) {
                 ++hit;
-                EXPECT_TRUE(corners.may_hit(s.center, s.radius)) << "trial " << trial << ": a sphere the tile's rays hit was culled";
-                EXPECT_TRUE(shared.may_hit(s.center, s.radius)) << "trial " << trial << ": a sphere the tile's rays hit was culled";
+                for (const TileFrustum* frustum : {&corners, &shared})
+                    EXPECT_TRUE(frustum->may_hit(s.center, s.radius))
+                        << "trial " << trial << ": a sphere the tile's rays hit was culled";
             } else {
                 ++missed;
             }
@@ -136,7 +137,8 @@ TEST(TileCulling, KeepsEveryTriangleAndBoxATilesRayHits) {
                     }
                 const bool triangle_kept = frustum.may_hit(a, b, c);
                 const bool box_kept = frustum.overlap(a - half, a + half) != TileFrustum::Overlap::outside;
-                if (triangle_hit) EXPECT_TRUE(triangle_kept) << "trial " << trial << ": a triangle the tile's rays hit was culled";
+                if (triangle_hit)
+                    EXPECT_TRUE(triangle_kept) << "trial " << trial << ": a triangle the tile's rays hit was culled";
                 if (box_hit) EXPECT_TRUE(box_kept) << "trial " << trial << ": a box the tile's rays hit was culled";
                 hit += triangle_hit + box_hit;
                 culled += !triangle_kept + !box_kept;
