@@ -6,6 +6,10 @@
 //     ends early (OFF, ASCII STL), a PLY value it cannot parse (read as 0). We
 //     install a logger that prints nothing and collects them per thread; any
 //     message not known to be harmless fails the load.
+//   - an OFF index "-1" it reads as 0 and reports nowhere: the face comes out
+//     degenerate, so an OFF file with degenerate faces is read again for it.
+//   - it names no line for what it read wrong (a NaN, a clamped index): the
+//     file is read again for that vertex or face (io/mesh_records.h).
 //   - JoinIdenticalVertices takes any vertex with a NaN coordinate for equal to
 //     another vertex it shares a hash bucket with, so the NaN can vanish:
 //     coordinates are checked before joining (the file is read, checked, then
@@ -45,6 +49,7 @@
 
 #include "io/input_error.h"
 #include "io/mesh_file_headers.h"
+#include "io/mesh_records.h"
 #include "io/mesh_text.h"
 
 namespace fh {
@@ -57,7 +62,7 @@ using mesh_text::lowercase;
 using mesh_text::plural;
 using mesh_text::starts_with;
 
-enum class Format { obj, ply, stl, off };
+using Format = MeshFormat;
 
 
 
@@ -166,18 +171,22 @@ std::string number(float v) {
 
 std::string triple(const aiVector3D& v) { return "(" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ")"; }
 
-[[noreturn]] void fail(const std::string& path, const std::string& assimp_message, bool binary_ply) {
+[[noreturn]] void fail(const std::string& path, Format format, const std::string& assimp_message, bool binary_ply) {
     detail::MeshMessage m = detail::clean_assimp_message(assimp_message, path);
     if (binary_ply && contains(m.text, "out of range")) m.text += " (truncated or corrupt binary data?)";
+    if (m.line == 0 && contains(m.text, "vertex index out of range")) {
+        const TextPosition at = bad_face_index_position(path, format);
+        throw InputError(path, at.line, at.column, m.text);
+    }
     throw InputError(path, m.line, 0, m.text);
 }
 
 // A failed read, or one assimp logged a problem with: InputError.
-void check_result(const std::string& path, const MessageCollector& log, const aiScene* scene,
+void check_result(const std::string& path, Format format, const MessageCollector& log, const aiScene* scene,
                   const Assimp::Importer& importer, bool binary_ply) {
     for (const std::string& m : log.messages())
-        if (!harmless(m)) fail(path, m, binary_ply);
-    if (scene == nullptr) fail(path, importer.GetErrorString(), binary_ply);
+        if (!harmless(m)) fail(path, format, m, binary_ply);
+    if (scene == nullptr) fail(path, format, importer.GetErrorString(), binary_ply);
 }
 
 bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -194,6 +203,21 @@ std::string vertex_name(Format format, const aiMesh& mesh, unsigned v, std::size
         case Format::obj: break;
     }
     return "the vertex at " + triple(mesh.mVertices[v]);
+}
+
+std::array<float, 3> floats(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+
+// Where vertex `v` of a mesh as read is in a text file (vertex_name's vertex),
+// its first non-finite coordinate -- or with `normals`, its first non-finite
+// number (OBJ: in the `vn` record of that normal).
+TextPosition nonfinite_position(const std::string& path, Format format, const aiMesh& mesh, unsigned v,
+                                std::size_t first_facet, bool normals) {
+    if (format == Format::obj) {
+        const std::array<float, 3> p = floats(normals ? mesh.mNormals[v] : mesh.mVertices[v]);
+        return nonfinite_vertex_position(path, format, normals, -1, &p);
+    }
+    const long long record = format == Format::stl ? 3 * (long long)first_facet + v : v;
+    return nonfinite_vertex_position(path, format, normals, record);
 }
 
 // The file as read, before post-processing: faces with vertices, finite
@@ -222,7 +246,8 @@ bool check_read(const std::string& path, Format format, const aiScene& scene, st
             if (finite(mesh.mVertices[v])) continue;
             std::string what = vertex_name(format, mesh, v, first_facet) + " has a non-finite coordinate";
             if (format != Format::obj) what += ": " + triple(mesh.mVertices[v]);
-            throw InputError(path, what);
+            const TextPosition at = nonfinite_position(path, format, mesh, v, first_facet, false);
+            throw InputError(path, at.line, at.column, what);
         }
         if (mesh.HasNormals() && format != Format::stl) {
             for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
@@ -231,7 +256,10 @@ bool check_read(const std::string& path, Format format, const aiScene& scene, st
                     const aiVector3D& n = mesh.mNormals[face.mIndices[k]];
                     if (!finite(n)) {
                         std::string what = vertex_name(format, mesh, face.mIndices[k], first_facet);
-                        throw InputError(path, what.append(" has a non-finite normal: ").append(triple(n)));
+                        const TextPosition at =
+                            nonfinite_position(path, format, mesh, face.mIndices[k], first_facet, true);
+                        throw InputError(path, at.line, at.column,
+                                         what.append(" has a non-finite normal: ").append(triple(n)));
                     }
                     if (n.x == 0 && n.y == 0 && n.z == 0) all_normals = false;
                 }
@@ -451,7 +479,7 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
         // Read and validated only, so coordinates are checked before
         // JoinIdenticalVertices can merge a NaN away.
         const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
-        check_result(path, log, scene, importer, binary_ply);
+        check_result(path, format, log, scene, importer, binary_ply);
         const bool all_normals = check_read(path, format, *scene, max_triangles);
         // Vertices that differ only in what we do not keep are one vertex.
         // STL's normals are its facets', not its vertices'.
@@ -460,14 +488,29 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
         importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, drop);
         scene = importer.ApplyPostProcessing(aiProcess_RemoveComponent | aiProcess_Triangulate |
                                              aiProcess_JoinIdenticalVertices);
-        check_result(path, log, scene, importer, binary_ply);
-        return collect(path, *scene, all_normals);
+        check_result(path, format, log, scene, importer, binary_ply);
+        // assimp reads an OFF index "-1" as 0, silently: the face comes out
+        // degenerate and is dropped. So where one was, the faces are read again.
+        auto check_off_indices = [&] {
+            if (format != Format::off) return;
+            const TextPosition at = bad_face_index_position(path, format);
+            if (at.line > 0) throw InputError(path, at.line, at.column, "a face has a vertex index out of range");
+        };
+        MeshData mesh;
+        try {
+            mesh = collect(path, *scene, all_normals);
+        } catch (const InputError&) {
+            check_off_indices();  // "no triangles": all of them dropped
+            throw;
+        }
+        if (mesh.degenerate_dropped > 0) check_off_indices();
+        return mesh;
     } catch (const InputError&) {
         throw;
     } catch (const std::bad_alloc&) {
         throw InputError(path, "out of memory reading the mesh");
     } catch (const std::exception& e) {
-        fail(path, e.what(), binary_ply);
+        fail(path, format, e.what(), binary_ply);
     }
 }
 

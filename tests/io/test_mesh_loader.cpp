@@ -377,7 +377,8 @@ TEST(MeshLoader, LoadsOnSeveralThreadsKeepTheirOwnMessages) {
     const std::string good = write_temp_file("threads_good.off", cube_off());
     int bad_failed = 0, good_loaded = 0;
     std::thread a([&] {
-        for (int i = 0; i < 40; ++i) bad_failed += error_of(bad) == "FILE: error: a face has a vertex index out of range";
+        for (int i = 0; i < 40; ++i)
+            bad_failed += error_of(bad) == "FILE:11:7: error: a face has a vertex index out of range";
     });
     std::thread b([&] {
         for (int i = 0; i < 40; ++i) good_loaded += error_of(good) == "(no error)";
@@ -460,12 +461,36 @@ TEST(MeshLoaderErrors, HeaderCountsFarBeyondTheFile) {
 }
 
 TEST(MeshLoaderErrors, FaceIndexOutOfRange) {
-    EXPECT_EQ(mesh_error("index.obj", cube_obj() + "f 1 2 9\n"), "FILE: error: a face has a vertex index out of range");
-    // assimp clamps it to the last vertex and only logs it.
-    EXPECT_EQ(mesh_error("index.off", off_with_bad_index()), "FILE: error: a face has a vertex index out of range");
+    // assimp names no line: the file is scanned again for the first index
+    // that names no vertex. The cube's OBJ: a comment, 8 `v`, 12 `f` lines.
+    EXPECT_EQ(mesh_error("index.obj", cube_obj() + "f 1 2 9\n"),
+              "FILE:22:7: error: a face has a vertex index out of range");
+    // A relative index before the first vertex (-4 of 3), after a good one.
+    EXPECT_EQ(mesh_error("relative.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -3\nf 1 -1 -4\n"),
+              "FILE:5:8: error: a face has a vertex index out of range");
+    // assimp clamps it to the last vertex and only logs it. OFF: 2 header
+    // lines, 8 vertex lines, then the faces; the first one is changed.
+    EXPECT_EQ(mesh_error("index.off", off_with_bad_index()),
+              "FILE:11:7: error: a face has a vertex index out of range");
+    // A negative one, which assimp reads as 0 and says nothing of: alone or
+    // among good faces.
+    EXPECT_EQ(mesh_error("negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n"),
+              "FILE:6:7: error: a face has a vertex index out of range");
+    std::string negative = cube_off();
+    negative.replace(negative.find("3 0 1 3\n"), 8, "3 0 -1 3\n");
+    EXPECT_EQ(mesh_error("negative_cube.off", negative), "FILE:11:5: error: a face has a vertex index out of range");
+    // Counts on the keyword's line, comments and blank lines between records.
+    EXPECT_EQ(mesh_error("comments.off", "OFF 3 1 0 # counts\n# a comment\n0 0 0\n\n1 0 0\n0 1 0 # last\n3 0 1 3\n"),
+              "FILE:7:7: error: a face has a vertex index out of range");
+    // PLY: a 10-line header and 8 vertex lines, then face 0.
     std::string ply = cube_ply_ascii();
     ply.replace(ply.find("3 0 1 3\n"), 8, "3 0 1 8\n");
-    EXPECT_EQ(mesh_error("index.ply", ply), "FILE: error: face 0 has a vertex index out of range");
+    EXPECT_EQ(mesh_error("index.ply", ply), "FILE:19:7: error: face 0 has a vertex index out of range");
+    // A scalar property before the face's index list.
+    std::string flagged = ply_header("ascii", false, 3, 1);
+    flagged.replace(flagged.find("property list"), 0, "property uchar flags\n");
+    EXPECT_EQ(mesh_error("flagged.ply", flagged + "0 0 0\n1 0 0\n0 1 0\n7 3 0 1 3\n"),
+              "FILE:15:9: error: face 0 has a vertex index out of range");
 }
 
 TEST(MeshLoaderErrors, PlyFaceWithoutVertices) {
@@ -489,13 +514,29 @@ TEST(MeshLoaderErrors, NonFiniteCoordinates) {
     // merge a NaN vertex into another one, and the NaN is gone.
     std::string ply = cube_ply_ascii();
     ply.replace(ply.find("1 1 1\n"), 6, "nan 1 1\n");
-    EXPECT_EQ(mesh_error("nan.ply", ply), "FILE: error: vertex 7 has a non-finite coordinate: (nan, 1, 1)");
+    // Where the vertex is: its line (a 10-line header, then vertex 7), and
+    // the column of the number.
+    EXPECT_EQ(mesh_error("nan.ply", ply), "FILE:18:1: error: vertex 7 has a non-finite coordinate: (nan, 1, 1)");
     std::string obj = cube_obj();
     obj.replace(obj.find("v 1 1 1\n"), 8, "v 1 nan 1\n");
-    EXPECT_EQ(mesh_error("nan.obj", obj), "FILE: error: the vertex at (1, nan, 1) has a non-finite coordinate");
+    EXPECT_EQ(mesh_error("nan.obj", obj), "FILE:9:5: error: the vertex at (1, nan, 1) has a non-finite coordinate");
     obj = cube_obj();
     obj.replace(obj.find("v 1 1 1\n"), 8, "v 1 1 -inf\n");
-    EXPECT_EQ(mesh_error("inf.obj", obj), "FILE: error: the vertex at (1, 1, -inf) has a non-finite coordinate");
+    EXPECT_EQ(mesh_error("inf.obj", obj), "FILE:9:7: error: the vertex at (1, 1, -inf) has a non-finite coordinate");
+    // OBJ names the vertex by its position, assimp's first in face order:
+    // the line is that vertex's, not the first bad one's (line 2). 1e39 is
+    // infinite as a float, which is how assimp reads it.
+    EXPECT_EQ(mesh_error("two.obj", "v 0 0 0\nv 2 2 nan\nv 1 0 0\nv 0 1 1e39\nf 1 3 4\nf 1 2 3\n"),
+              "FILE:4:7: error: the vertex at (0, 1, inf) has a non-finite coordinate");
+    // An element after the vertices and faces changes nothing before it (a
+    // 13-line header: vertex 2 on line 16).
+    std::string edges = ply_header("ascii", false, 3, 1);
+    edges.replace(edges.find("end_header"), 0, "element edge 1\nproperty int a\nproperty int b\n");
+    EXPECT_EQ(mesh_error("edges.ply", edges + "0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n0 1\n"),
+              "FILE:16:3: error: vertex 2 has a non-finite coordinate: (0, nan, 0)");
+    EXPECT_EQ(mesh_error("nan.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                                    "vertex 0 nan 0\nendloop\nendfacet\nendsolid t\n"),
+              "FILE:6:10: error: a vertex of facet 0 has a non-finite coordinate: (0, nan, 0)");
     const auto c = corner(kCubeTriangles[3][0]);
     EXPECT_EQ(mesh_error("inf.stl", cube_stl_binary(std::numeric_limits<float>::infinity(), true)),
               "FILE: error: a vertex of facet 3 has a non-finite coordinate: (inf, " + std::to_string(c[1]) + ", " +
@@ -526,9 +567,9 @@ TEST(MeshLoader, NormalsOnlyWhenEveryVertexHasOne) {
 TEST(MeshLoaderErrors, NonFiniteNormals) {
     std::string ply = cube_ply_ascii(true);
     ply.replace(ply.find("0 0 0 -1 -1 -1\n"), 15, "0 0 0 nan -1 -1\n");
-    EXPECT_EQ(mesh_error("nan_normal.ply", ply), "FILE: error: vertex 0 has a non-finite normal: (nan, -1, -1)");
+    EXPECT_EQ(mesh_error("nan_normal.ply", ply), "FILE:14:7: error: vertex 0 has a non-finite normal: (nan, -1, -1)");
     EXPECT_EQ(mesh_error("inf_normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 inf 1\nf 1//1 2//1 3//1\n"),
-              "FILE: error: the vertex at (0, 0, 0) has a non-finite normal: (0, inf, 1)");
+              "FILE:4:6: error: the vertex at (0, 0, 0) has a non-finite normal: (0, inf, 1)");
 }
 
 TEST(MeshLoaderErrors, NoTriangles) {
