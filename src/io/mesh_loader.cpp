@@ -216,7 +216,7 @@ TextPosition nonfinite_position(const std::string& path, Format format, const ai
         const std::array<float, 3> p = floats(normals ? mesh.mNormals[v] : mesh.mVertices[v]);
         return nonfinite_vertex_position(path, format, normals, -1, &p);
     }
-    const long long record = format == Format::stl ? 3 * (long long)first_facet + v : v;
+    const long long record = format == Format::stl ? 3 * static_cast<long long>(first_facet) + v : v;
     return nonfinite_vertex_position(path, format, normals, record);
 }
 

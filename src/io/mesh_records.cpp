@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <string_view>
 #include <vector>
 
 #include "io/mesh_text.h"

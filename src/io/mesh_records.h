@@ -24,7 +24,8 @@ struct TextPosition {
 // (its coordinates), or among all of them with `normals` (OBJ: in `vn`
 // records). index >= 0: only in the index-th record (from 0, in file
 // order); index < 0 and `position` given: in the first record whose
-// coordinates are those (NaN matching NaN); else in the first record.
+// coordinates are those (NaN matching NaN) and hold one; else in the first
+// record that holds one.
 TextPosition nonfinite_vertex_position(const std::string& path, MeshFormat format, bool normals, long long index = -1,
                                        const std::array<float, 3>* position = nullptr);
 
