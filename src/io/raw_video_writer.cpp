@@ -37,7 +37,7 @@ RawVideoWriter::~RawVideoWriter() {
 }
 
 void RawVideoWriter::put(int position, Image image) {
-    std::vector<std::uint8_t> frame =
+    Bytes frame =
         format_ == RawPixelFormat::yuv420p ? to_yuv420p(image) : std::move(image.rgb);
     std::unique_lock lock(mutex_);
     advanced_.wait(lock, [&] { return position < next_ + window_ || !error_.empty(); });
@@ -57,7 +57,7 @@ void RawVideoWriter::fail(const std::string& why) {
     advanced_.notify_all();
 }
 
-void RawVideoWriter::write_all(const std::vector<std::uint8_t>& frame) {
+void RawVideoWriter::write_all(const Bytes& frame) {
     const auto* p = frame.data();
     size_t left = frame.size();
     while (left > 0) {

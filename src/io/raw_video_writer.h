@@ -41,7 +41,7 @@ public:
     void fail(const std::string& why);
 
 private:
-    void write_all(const std::vector<std::uint8_t>& frame);  // with mutex_ held
+    void write_all(const Bytes& frame);  // with mutex_ held
 
     std::string name_;
     int fd_ = -1;
@@ -50,7 +50,7 @@ private:
     RawPixelFormat format_;
     std::mutex mutex_;
     std::condition_variable advanced_;
-    std::map<int, std::vector<std::uint8_t>> held_;  // frames in the stream's format
+    std::map<int, Bytes> held_;  // frames in the stream's format
     int next_ = 0;
     std::string error_;  // set once a write failed
 };

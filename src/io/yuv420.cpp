@@ -31,10 +31,10 @@ size_t yuv420p_size(int width, int height) {
     return size_t(width) * size_t(height) + 2 * cw * ch;
 }
 
-std::vector<std::uint8_t> to_yuv420p(const Image& image) {
+Bytes to_yuv420p(const Image& image) {
     const int w = image.width, h = image.height;
     const int cw = (w + 1) / 2, ch = (h + 1) / 2;
-    std::vector<std::uint8_t> out(yuv420p_size(w, h));
+    Bytes out(yuv420p_size(w, h));
     std::uint8_t* y_plane = out.data();
     std::uint8_t* u_plane = y_plane + size_t(w) * size_t(h);
     std::uint8_t* v_plane = u_plane + size_t(cw) * size_t(ch);

@@ -24,7 +24,7 @@
 namespace fh {
 
 // Y (w*h bytes), then Cb and Cr (ceil(w/2)*ceil(h/2) bytes each).
-std::vector<std::uint8_t> to_yuv420p(const Image& image);
+Bytes to_yuv420p(const Image& image);
 
 // Size in bytes of one such frame.
 size_t yuv420p_size(int width, int height);

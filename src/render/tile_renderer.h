@@ -190,7 +190,7 @@ FrameResult render_frame_as(const FlatScene<T>& flat, const Camera& camera, cons
     const auto start = std::chrono::steady_clock::now();
     const CameraRays<T> camera_rays(camera);
     FrameResult result;
-    result.image = Image(camera.width, camera.height);
+    result.image = Image::unzeroed(camera.width, camera.height);
     result.plan = flat.plan;
 
     // One counter block per worker, a cache line apart so they do not share one.

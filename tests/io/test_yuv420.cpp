@@ -78,7 +78,7 @@ TEST(Yuv420, AnEmptyImageIsEmptyPlanes) {
 }
 
 // ffmpeg's rgb24 -> yuv420p conversion of `rgb` (w x h).
-std::string ffmpeg_yuv(const std::vector<std::uint8_t>& rgb, int w, int h, const std::string& name) {
+std::string ffmpeg_yuv(const Bytes& rgb, int w, int h, const std::string& name) {
     const auto dir = fresh_dir(name);
     std::ofstream(dir / "in.rgb", std::ios::binary)
         .write(reinterpret_cast<const char*>(rgb.data()), std::streamsize(rgb.size()));
