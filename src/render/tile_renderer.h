@@ -202,7 +202,12 @@ FrameResult render_frame_as(const FlatScene<T>& flat, const Camera& camera, cons
     // Each tile's camera rays hit only what its frustum reaches (computed in
     // double: render/tile_culling.h); per worker, reused from tile to tile.
     const TileSides sides(CameraRays<double>(camera), camera.width, camera.height, kTileSize);
-    std::vector<PrimitiveSubset> subsets(workers);
+    // A cache line each too: a worker rewrites its list every tile, and the
+    // trace reads it for every packet.
+    struct alignas(64) PaddedSubset {
+        PrimitiveSubset s;
+    };
+    std::vector<PaddedSubset> subsets(workers);
     auto run = [&](int tasks, const std::function<void(int, int)>& fn) {
         if (pool) pool->parallel_for(tasks, fn);
         else for (int t = 0; t < tasks; ++t) fn(t, 0);
@@ -216,7 +221,7 @@ FrameResult render_frame_as(const FlatScene<T>& flat, const Camera& camera, cons
             RayCounts& c = counts[size_t(worker)].c;
             const int x0 = (t % tiles_x) * kTileSize, y0 = (t / tiles_x) * kTileSize;
             const int x1 = std::min(x0 + kTileSize, camera.width), y1 = std::min(y0 + kTileSize, camera.height);
-            PrimitiveSubset& visible = subsets[size_t(worker)];
+            PrimitiveSubset& visible = subsets[size_t(worker)].s;
             cull_to_frustum(*flat.geometry, sides.frustum(x0, x1, y0, y1), visible);
             if (settings.samples_per_pixel == 1) {
                 render_centres<T>(shader, camera_rays, x0, x1, y0, y1, &visible, result.image, c);
