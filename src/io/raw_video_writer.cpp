@@ -37,8 +37,7 @@ RawVideoWriter::~RawVideoWriter() {
 }
 
 void RawVideoWriter::put(int position, Image image) {
-    Bytes frame =
-        format_ == RawPixelFormat::yuv420p ? to_yuv420p(image) : std::move(image.rgb);
+    Bytes frame = format_ == RawPixelFormat::yuv420p ? to_yuv420p(image) : std::move(image.rgb);
     std::unique_lock lock(mutex_);
     advanced_.wait(lock, [&] { return position < next_ + window_ || !error_.empty(); });
     if (!error_.empty()) throw std::runtime_error(error_);

@@ -50,8 +50,9 @@ struct Image {
         im.height = h;
         im.rgb.resize(std::size_t(w) * std::size_t(h) * 3);
 #ifndef NDEBUG
-        // Debug builds (the sanitizers' among them): a byte nobody wrote
-        // shows as 0xCD, not as a black that may look intended.
+        // Debug builds: a byte nobody wrote shows as 0xCD, not as a black
+        // that may look intended (tests/render/test_frame_image.cpp checks
+        // every build).
         std::fill(im.rgb.begin(), im.rgb.end(), std::uint8_t(0xCD));
 #endif
         return im;
