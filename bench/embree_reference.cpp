@@ -10,14 +10,16 @@
 // How Embree is driven, the way its tutorials do for coherent rays:
 // RTC_SCENE_FLAG_NONE, RTC_BUILD_QUALITY_MEDIUM (the default), one
 // triangle-mesh geometry; the image cut into 16 x 16 tiles handed out to the
-// threads (started once) by an atomic counter, each tile traced as 16
-// packets of 4 x 4 pixels with rtcIntersect16, then one rtcOccluded16 for the
-// lanes that face the light; flush-to-zero and denormals-are-zero on in
-// every tracing thread (Embree's recommendation). Colours are computed in
-// float.
+// threads (started once) by an atomic counter, each tile traced in packets
+// of the widest size this CPU's Embree traces natively (16 rays in 4 x 4
+// pixels with AVX-512, 8 in 4 x 2 with AVX2: rtcIntersect16/8), then one
+// rtcOccluded16/8 for the lanes that face the light (--width forces 4, 8 or
+// 16; a width wider than native Embree traces ray by ray); flush-to-zero
+// and denormals-are-zero on in every tracing thread (Embree's
+// recommendation). Colours are computed in float.
 //
 // The floor is handled analytically in the shading code, not as triangles in
-// Embree: one ray-plane division per lane after rtcIntersect16, and one for
+// Embree: one ray-plane division per lane after rtcIntersect, and one for
 // the shadow rays (which never hit it here: the light comes from above).
 // That is what firsthit does too (planes are outside its BVH), and two huge
 // triangles would only widen Embree's root boxes.
@@ -31,7 +33,7 @@
 // to stderr too. firsthit_bench_scaling traces in double unless given
 // --precision float; this traces in float, as Embree does.
 //   firsthit_embree_reference [--threads N] [--runs K] [--max-level K] [--png OUT.png]
-//                             [--bunny FILE.off] [--verbose]
+//                             [--bunny FILE.off] [--width 4|8|16] [--verbose]
 // --png writes the bunny's frame (the last icosphere's without the bunny);
 // --bunny: default animations/meshes/bunny00.off of this source tree (bash
 // scripts/fetch_meshes.sh fetches it); missing, the bunny row is left out.
@@ -191,11 +193,59 @@ struct Counts {
     std::uint64_t primary = 0, shadow = 0;
 };
 
-// 16 lanes as one value (GCC's vector extensions: one AVX-512 register, or
-// split by the compiler on narrower CPUs), for the code around the Embree
-// calls.
-using VF = float __attribute__((vector_size(64)));
-using VI = std::int32_t __attribute__((vector_size(64)));
+// A packet's rays, by width: Embree's ray structures and calls for packets
+// of 4, 8 and 16, and the pixel block a packet covers (4 x 4, 4 x 2, 2 x 2).
+// The frame uses the widest packets this CPU's Embree traces natively
+// (16 with AVX-512, 8 with AVX2), as firsthit's packets follow the CPU's
+// vector width: Embree emulates a wider packet ray by ray.
+template <int W>
+struct Packet;
+template <>
+struct Packet<16> {
+    using RayHit = RTCRayHit16;
+    using Ray = RTCRay16;
+    static constexpr int kBlockX = 4;
+    static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { rtcIntersect16(v, s, c, r); }
+    static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { rtcOccluded16(v, s, c, r); }
+};
+template <>
+struct Packet<8> {
+    using RayHit = RTCRayHit8;
+    using Ray = RTCRay8;
+    static constexpr int kBlockX = 4;
+    static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { rtcIntersect8(v, s, c, r); }
+    static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { rtcOccluded8(v, s, c, r); }
+};
+template <>
+struct Packet<4> {
+    using RayHit = RTCRayHit4;
+    using Ray = RTCRay4;
+    static constexpr int kBlockX = 2;
+    static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { rtcIntersect4(v, s, c, r); }
+    static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { rtcOccluded4(v, s, c, r); }
+};
+
+// W lanes as one value (GCC's vector extensions: one register of the
+// packet's width), for the code around the Embree calls.
+// (Spelled out per width: GCC drops a vector_size that depends on a
+// template parameter.)
+template <int W>
+struct Lanes;
+template <>
+struct Lanes<16> {
+    using VF = float __attribute__((vector_size(64)));
+    using VI = std::int32_t __attribute__((vector_size(64)));
+};
+template <>
+struct Lanes<8> {
+    using VF = float __attribute__((vector_size(32)));
+    using VI = std::int32_t __attribute__((vector_size(32)));
+};
+template <>
+struct Lanes<4> {
+    using VF = float __attribute__((vector_size(16)));
+    using VI = std::int32_t __attribute__((vector_size(16)));
+};
 template <typename V>
 inline V load(const void* p) {
     V v;
@@ -203,30 +253,51 @@ inline V load(const void* p) {
     return v;
 }
 inline void store(void* p, const auto& v) { std::memcpy(p, &v, sizeof v); }
-inline VF splat(float x) { return VF{} + x; }
-inline VF abs(VF v) { return VF(VI(v) & 0x7fffffff); }
-inline VF vmax(VF a, VF b) { return a > b ? a : b; }
-inline VF vmin(VF a, VF b) { return a < b ? a : b; }
+template <typename VF>
+inline VF splat(float x) {
+    return VF{} + x;
+}
+template <typename VF>
+inline VF vabs(VF v) {
+    using VI = decltype(v < v);
+    return VF(VI(v) & 0x7fffffff);
+}
+template <typename VF>
+inline VF vmax(VF a, VF b) {
+    return a > b ? a : b;
+}
+template <typename VF>
+inline VF vmin(VF a, VF b) {
+    return a < b ? a : b;
+}
+template <typename VF>
 inline VF rsqrt(VF v) {  // 1 / sqrt, lane by lane: one vsqrtps and one vdivps
     VF r;
-    for (int i = 0; i < 16; ++i) r[i] = std::sqrt(v[i]);
+    for (int i = 0; i < int(sizeof v / sizeof(float)); ++i) r[i] = std::sqrt(v[i]);
     return 1.0f / r;
 }
+template <typename VI>
 inline int count(VI m) {
     int n = 0;
-    for (int i = 0; i < 16; ++i) n += m[i] != 0;
+    for (int i = 0; i < int(sizeof m / sizeof(std::int32_t)); ++i) n += m[i] != 0;
     return n;
 }
 
-// One 4 x 4 block of pixels, its top-left corner (bx, by): a packet of 16
-// camera rays, then a packet of shadow rays for the lanes lit by the sun.
-// The steps around the two Embree calls work on all 16 lanes at once
-// (what Embree's own tutorials get from ISPC), so that the frame time is
-// Embree's, not that of scalar code around it.
+// One block of W pixels (Packet<W>::kBlockX wide), its top-left corner
+// (bx, by): a packet of W camera rays, then a packet of shadow rays for the
+// lanes lit by the sun. The steps around the two Embree calls work on all
+// lanes at once (what Embree's own tutorials get from ISPC), so that the
+// frame time is Embree's, not that of scalar code around it.
+template <int W>
 void trace_block(RTCScene scene, const SceneSpec& spec, const CameraRays& cam, int bx, int by,
                  fh::Image& image, Counts& counts) {
-    const VI lane{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
-    const VI xi = bx + (lane & 3), yi = by + (lane >> 2);
+    using P = Packet<W>;
+    using VF = typename Lanes<W>::VF;
+    using VI = typename Lanes<W>::VI;
+    constexpr int kShift = P::kBlockX == 4 ? 2 : 1;
+    VI lane;
+    for (int i = 0; i < W; ++i) lane[i] = i;
+    const VI xi = bx + (lane & (P::kBlockX - 1)), yi = by + (lane >> kShift);
     const VI valid = (xi < kWidth) & (yi < kHeight);
     // Lanes past the image's edge repeat its last pixel, inactive.
     const VF px = __builtin_convertvector(xi < kWidth ? xi : kWidth - 1, VF) + 0.5f;
@@ -238,12 +309,12 @@ void trace_block(RTCScene scene, const SceneSpec& spec, const CameraRays& cam, i
     const VF inv_len = rsqrt(dx * dx + dy * dy + dz * dz);
     dx *= inv_len, dy *= inv_len, dz *= inv_len;
 
-    alignas(64) RTCRayHit16 rh;
-    const VF zero = splat(0), inf = splat(kInf);
+    alignas(64) typename P::RayHit rh;
+    const VF zero = splat<VF>(0), inf = splat<VF>(kInf);
     const VI none = VI{} + int(RTC_INVALID_GEOMETRY_ID), all_bits = VI{} - 1;
-    store(rh.ray.org_x, splat(cam.eye.x));
-    store(rh.ray.org_y, splat(cam.eye.y));
-    store(rh.ray.org_z, splat(cam.eye.z));
+    store(rh.ray.org_x, splat<VF>(cam.eye.x));
+    store(rh.ray.org_y, splat<VF>(cam.eye.y));
+    store(rh.ray.org_z, splat<VF>(cam.eye.z));
     store(rh.ray.dir_x, dx);
     store(rh.ray.dir_y, dy);
     store(rh.ray.dir_z, dz);
@@ -258,31 +329,31 @@ void trace_block(RTCScene scene, const SceneSpec& spec, const CameraRays& cam, i
     store(rh.hit.Ng_z, zero);
     store(rh.hit.geomID, none);
     store(rh.hit.instID[0], none);
-    alignas(64) std::int32_t valid_mask[16];
+    alignas(64) std::int32_t valid_mask[W];
     store(valid_mask, valid);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    rtcIntersect16(valid_mask, scene, &context, &rh);
+    P::intersect(valid_mask, scene, &context, &rh);
 
     // The nearest hit of each lane, the floor included: t = (d - n.o) /
     // (n.dir), n = (0, 0, 1); a (nearly) parallel ray misses it, as in
     // firsthit's Plane. The unit normal, facing the ray.
-    const VF ox = splat(cam.eye.x), oy = splat(cam.eye.y), oz = splat(cam.eye.z);
+    const VF ox = splat<VF>(cam.eye.x), oy = splat<VF>(cam.eye.y), oz = splat<VF>(cam.eye.z);
     const VI mesh_hit = valid & (load<VI>(rh.hit.geomID) != none);
     const VF t_mesh = mesh_hit ? load<VF>(rh.ray.tfar) : inf;
     const VF t_floor = (spec.floor_z - oz) / dz;
-    const VI on_floor = valid & (abs(dz) >= 1e-6f) & (t_floor > 0) & (t_floor < t_mesh);
+    const VI on_floor = valid & (vabs(dz) >= 1e-6f) & (t_floor > 0) & (t_floor < t_mesh);
     const VI on_mesh = mesh_hit & ~on_floor;
     const VI hit = on_mesh | on_floor;
     const VF t = on_floor ? t_floor : t_mesh;
     VF nx = load<VF>(rh.hit.Ng_x), ny = load<VF>(rh.hit.Ng_y), nz = load<VF>(rh.hit.Ng_z);
     const VF g2 = nx * nx + ny * ny + nz * nz;
-    const VF inv_g = rsqrt(g2 > 0 ? g2 : splat(1));
+    const VF inv_g = rsqrt(g2 > 0 ? g2 : splat<VF>(1));
     nx = on_floor ? zero : nx * inv_g;
     ny = on_floor ? zero : ny * inv_g;
-    nz = on_floor ? splat(1) : nz * inv_g;
-    const VF facing = nx * dx + ny * dy + nz * dz > 0 ? splat(-1) : splat(1);
+    nz = on_floor ? splat<VF>(1) : nz * inv_g;
+    const VF facing = nx * dx + ny * dy + nz * dz > 0 ? splat<VF>(-1) : splat<VF>(1);
     nx *= facing, ny *= facing, nz *= facing;
     const VF n_dot_l = nx * kToLight.x + ny * kToLight.y + nz * kToLight.z;
     VI lit = hit & (n_dot_l > 0);
@@ -295,27 +366,27 @@ void trace_block(RTCScene scene, const SceneSpec& spec, const CameraRays& cam, i
     counts.shadow += unsigned(lit_count);
     if (lit_count > 0) {
         const VF hx = ox + t * dx, hy = oy + t * dy, hz = oz + t * dz;
-        const VF eps = 1e-7f + 1e-5f * vmax(abs(hx), vmax(abs(hy), abs(hz)));
+        const VF eps = 1e-7f + 1e-5f * vmax(vabs(hx), vmax(vabs(hy), vabs(hz)));
         const VF sz = lit ? hz + eps * nz : zero;
-        alignas(64) RTCRay16 shadow;
+        alignas(64) typename P::Ray shadow;
         store(shadow.org_x, lit ? hx + eps * nx : zero);
         store(shadow.org_y, lit ? hy + eps * ny : zero);
         store(shadow.org_z, sz);
-        store(shadow.dir_x, splat(kToLight.x));
-        store(shadow.dir_y, splat(kToLight.y));
-        store(shadow.dir_z, splat(kToLight.z));
+        store(shadow.dir_x, splat<VF>(kToLight.x));
+        store(shadow.dir_y, splat<VF>(kToLight.y));
+        store(shadow.dir_z, splat<VF>(kToLight.z));
         store(shadow.tnear, zero);
         store(shadow.tfar, inf);
         store(shadow.time, zero);
         store(shadow.mask, all_bits);
         store(shadow.id, lane);
         store(shadow.flags, VI{});
-        alignas(64) std::int32_t lit_mask[16];
+        alignas(64) std::int32_t lit_mask[W];
         store(lit_mask, lit);
         RTCIntersectContext shadow_context;
         rtcInitIntersectContext(&shadow_context);
         shadow_context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-        rtcOccluded16(lit_mask, scene, &shadow_context, &shadow);
+        P::occluded(lit_mask, scene, &shadow_context, &shadow);
         // Blocked by the mesh (Embree sets tfar = -inf), or by the floor,
         // analytically (never here: the light is above it).
         lit &= load<VF>(shadow.tfar) >= 0;
@@ -328,13 +399,14 @@ void trace_block(RTCScene scene, const SceneSpec& spec, const CameraRays& cam, i
     const Shade& m = spec.mesh;
     const Shade& f = spec.floor;
     const VF d = lit ? n_dot_l : zero;
-    const VF s = vmin(vmax((dz + 1.0f) / 2.0f, zero), splat(1));
-    const VF r = on_mesh ? m.ambient.x + d * m.diffuse.x : on_floor ? f.ambient.x + d * f.diffuse.x : splat(255);
+    const VF s = vmin(vmax((dz + 1.0f) / 2.0f, zero), splat<VF>(1));
+    const VF r = on_mesh ? m.ambient.x + d * m.diffuse.x
+                         : on_floor ? f.ambient.x + d * f.diffuse.x : splat<VF>(255);
     const VF g = on_mesh ? m.ambient.y + d * m.diffuse.y : on_floor ? f.ambient.y + d * f.diffuse.y : 255.0f * s;
     const VF bl = on_mesh ? m.ambient.z + d * m.diffuse.z : on_floor ? f.ambient.z + d * f.diffuse.z : zero;
-    auto to_byte = [&](VF v) { return __builtin_convertvector(vmin(vmax(v, zero), splat(255)) + 0.5f, VI); };
+    auto to_byte = [&](VF v) { return __builtin_convertvector(vmin(vmax(v, zero), splat<VF>(255)) + 0.5f, VI); };
     const VI r8 = to_byte(r), g8 = to_byte(g), b8 = to_byte(bl);
-    for (int i = 0; i < 16; ++i) {
+    for (int i = 0; i < W; ++i) {
         if (!valid[i]) continue;
         std::uint8_t* p = image.pixel(xi[i], yi[i]);
         p[0] = std::uint8_t(r8[i]), p[1] = std::uint8_t(g8[i]), p[2] = std::uint8_t(b8[i]);
@@ -410,8 +482,27 @@ private:
     bool stopping_ = false;
 };
 
+// How a frame traces its blocks: the packet width W and trace_block<W>.
+struct Blocks {
+    int width = 16;  // W
+    int block_x = 4, block_y = 4;
+    void (*trace)(RTCScene, const SceneSpec&, const CameraRays&, int, int, fh::Image&, Counts&) = trace_block<16>;
+};
+template <int W>
+Blocks blocks_of() {
+    return {W, Packet<W>::kBlockX, W / Packet<W>::kBlockX, trace_block<W>};
+}
+
+// The widest packets Embree traces natively on this CPU (16, 8 or 4).
+Blocks native_blocks(RTCDevice device) {
+    if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED)) return blocks_of<16>();
+    if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED)) return blocks_of<8>();
+    return blocks_of<4>();
+}
+
 // One frame: 16 x 16 tiles handed out by an atomic counter to the threads.
-Frame render(RTCScene scene, const SceneSpec& spec, const CameraRays& cam, Workers& workers) {
+Frame render(RTCScene scene, const SceneSpec& spec, const CameraRays& cam, const Blocks& blocks,
+             Workers& workers) {
     const auto start = Clock::now();
     Frame f;
     f.image = fh::Image(kWidth, kHeight);
@@ -425,9 +516,9 @@ Frame render(RTCScene scene, const SceneSpec& spec, const CameraRays& cam, Worke
         Counts& c = counts[size_t(worker)].c;
         for (int t; (t = next.fetch_add(1, std::memory_order_relaxed)) < tiles;) {
             const int x0 = (t % tiles_x) * kTile, y0 = (t / tiles_x) * kTile;
-            for (int y = y0; y < std::min(y0 + kTile, kHeight); y += 4)
-                for (int x = x0; x < std::min(x0 + kTile, kWidth); x += 4)
-                    trace_block(scene, spec, cam, x, y, f.image, c);
+            for (int y = y0; y < std::min(y0 + kTile, kHeight); y += blocks.block_y)
+                for (int x = x0; x < std::min(x0 + kTile, kWidth); x += blocks.block_x)
+                    blocks.trace(scene, spec, cam, x, y, f.image, c);
         }
     });
     for (const auto& c : counts) f.counts.primary += c.c.primary, f.counts.shadow += c.c.shadow;
@@ -465,17 +556,17 @@ RTCScene new_scene(RTCDevice device, const SceneSpec& spec) {
 
 // Builds the scene (build_ms: rtcCommitScene only), renders a warm-up frame
 // and `runs` timed ones, prints the CSV row; returns the last frame.
-Frame run(RTCDevice device, const SceneSpec& spec, Workers& workers, int runs) {
+Frame run(RTCDevice device, const SceneSpec& spec, const Blocks& blocks, Workers& workers, int runs) {
     RTCScene scene = new_scene(device, spec);
     const auto start = Clock::now();
     rtcCommitScene(scene);
     const double build_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 
     const CameraRays cam;
-    Frame f = render(scene, spec, cam, workers);  // warm-up
+    Frame f = render(scene, spec, cam, blocks, workers);  // warm-up
     std::vector<double> ms;
     for (int k = 0; k < runs; ++k) {
-        f = render(scene, spec, cam, workers);
+        f = render(scene, spec, cam, blocks, workers);
         ms.push_back(f.ms);
     }
     rtcReleaseScene(scene);
@@ -493,7 +584,7 @@ Frame run(RTCDevice device, const SceneSpec& spec, Workers& workers, int runs) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    int threads = 2, runs = 9, max_level = 8;
+    int threads = 2, runs = 9, max_level = 8, width = 0;
     bool verbose = false;
     std::string png, bunny = std::string(FIRSTHIT_SOURCE_DIR) + "/animations/meshes/bunny00.off";
     for (int i = 1; i < argc; ++i) {
@@ -502,12 +593,15 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--runs") && has_value) runs = std::max(1, std::atoi(argv[++i]));
         else if (!std::strcmp(argv[i], "--max-level") && has_value) max_level = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--png") && has_value) png = argv[++i];
+        else if (!std::strcmp(argv[i], "--width") && has_value &&
+                 (!std::strcmp(argv[i + 1], "4") || !std::strcmp(argv[i + 1], "8") || !std::strcmp(argv[i + 1], "16")))
+            width = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--bunny") && has_value) bunny = argv[++i];
         else if (!std::strcmp(argv[i], "--verbose")) verbose = true;
         else {
             std::fprintf(stderr,
                          "usage: firsthit_embree_reference [--threads N] [--runs K] [--max-level K] "
-                         "[--png OUT.png] [--bunny FILE.off] [--verbose]\n");
+                         "[--png OUT.png] [--bunny FILE.off] [--width 4|8|16] [--verbose]\n");
             return 2;
         }
     }
@@ -523,9 +617,11 @@ int main(int argc, char** argv) {
     }
     rtcSetDeviceErrorFunction(device, on_error, nullptr);
     const long version = long(rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_VERSION));
-    std::fprintf(stderr, "# Embree %ld.%ld.%ld, native 16-wide packets: %s, tasking: %s, threads: %d\n",
-                 version / 10000, version / 100 % 100, version % 100,
-                 rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED) ? "yes" : "no (emulated)",
+    const Blocks native = native_blocks(device);
+    const Blocks blocks = width == 16 ? blocks_of<16>() : width == 8 ? blocks_of<8>() : width == 4 ? blocks_of<4>() : native;
+    std::fprintf(stderr, "# Embree %ld.%ld.%ld, %d-wide packets (%s; native: %d), tasking: %s, threads: %d\n",
+                 version / 10000, version / 100 % 100, version % 100, blocks.width,
+                 blocks.width > native.width ? "emulated" : "native", native.width,
                  rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_TASKING_SYSTEM) == 1 ? "TBB" : "internal/other",
                  threads);
 
@@ -538,7 +634,7 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     Workers workers(threads);
     Frame last;
-    for (int level = 1; level <= max_level; ++level) last = run(device, icosphere_scene(level), workers, runs);
+    for (int level = 1; level <= max_level; ++level) last = run(device, icosphere_scene(level), blocks, workers, runs);
 
     bool have_bunny = false;
     if (!std::filesystem::exists(bunny)) {
@@ -546,7 +642,7 @@ int main(int argc, char** argv) {
                      bunny.c_str());
     } else {
         try {
-            last = run(device, bunny_scene(bunny), workers, runs);
+            last = run(device, bunny_scene(bunny), blocks, workers, runs);
             have_bunny = true;
         } catch (const std::exception& e) {
             std::fprintf(stderr, "embree_reference: %s\n", e.what());

@@ -9,7 +9,8 @@
 # Then the same for real meshes from Debian's package data (scripts/
 # fetch_meshes.sh), through `firsthit bench`: OUT_DIR/scaling_real.csv.
 # Then, when it is built, the Embree 3 peer (bench/embree_reference.cpp: the
-# same scenes, rays and shading, 16-wide packets) with the same --threads,
+# same scenes, rays and shading, the widest packets Embree traces natively:
+# 16 rays with AVX-512, 8 with AVX2) with the same --threads,
 # --runs and --max-level: OUT_DIR/scaling_embree.csv, a third curve and the
 # bunny's point on the plot. Without it, the rest runs as before.
 # BENCH names the benchmark binary (default: build/bench/firsthit_bench_scaling),
@@ -64,7 +65,7 @@ fi
 embree_plot=""
 if [[ $have_embree == 1 ]]; then
   embree_plot=", \\
-     '$out/scaling_embree.csv' skip 1 using 2:(strcol(1) eq 'bunny' ? 1/0 : \$4) with linespoints lw 2 pt 13 title 'Embree 3, 16-wide packets: render (per frame)', \\
+     '$out/scaling_embree.csv' skip 1 using 2:(strcol(1) eq 'bunny' ? 1/0 : \$4) with linespoints lw 2 pt 13 title 'Embree 3, native packets: render (per frame)', \\
      '' skip 1 using 2:(strcol(1) eq 'bunny' ? \$4 : 1/0) with points pt 13 ps 2 title 'Stanford bunny: Embree 3 render'"
 fi
 if command -v gnuplot >/dev/null; then
