@@ -13,9 +13,16 @@ namespace fh {
 namespace {
 
 constexpr int kBins = 16;
-// Ranges at least this large are split on the calling thread (their binning
-// spread over the pool); smaller ones become subtrees built one per worker.
-constexpr int kSubtreeSize = 32768;
+// Ranges smaller than a subtree's size (subtree_size) become subtrees built
+// one per worker; larger ones are split on the calling thread, their
+// binning spread over the pool when at least twice that size.
+int subtree_size(int primitives, int workers) {
+    // About 16 subtrees a worker, so that they share out evenly (a fixed
+    // 32,768 left the bunny's second level binned on one thread and four
+    // subtrees for two workers), but none so small that a task's overhead
+    // shows, nor larger than a fixed size for big inputs.
+    return std::clamp(primitives / (16 * workers), 4096, 32768);
+}
 // Past this depth splits are by count: the traversal's stack stays bounded
 // whatever the input (coincident boxes give the heuristic nothing to split).
 constexpr int kMaxSahDepth = 96;
@@ -48,16 +55,71 @@ BvhNode node_with_box(const Aabb& b) {
     return n;
 }
 
+// The binning works in floats, four to a register (x, y, z and a spare
+// lane): a primitive's box and centroid, and each bin's box. The heuristic
+// only ranks the planes, so float's rounding can change which of two
+// nearly equal ones wins, never a node's box (range_bounds, in double) --
+// nor what a ray hits, which no tree changes.
+typedef float Float4 __attribute__((vector_size(16)));
+typedef std::int32_t Int4 __attribute__((vector_size(16)));
+
+Float4 min4(Float4 a, Float4 b) { return b < a ? b : a; }
+Float4 max4(Float4 a, Float4 b) { return a < b ? b : a; }
+Float4 to_float4(const dvec3& v) { return Float4{float(v.x), float(v.y), float(v.z), 0.0f}; }
+
+struct BinnedPrim {
+    Float4 lo, hi, centroid;
+};
+
+// The box of a range's centroids.
+struct CentroidBounds {
+    Float4 lo = Float4{} + kInfinity<float>, hi = -lo;
+
+    void grow(Float4 c) {
+        lo = min4(lo, c);
+        hi = max4(hi, c);
+    }
+    int widest_axis() const {
+        const Float4 d = hi - lo;
+        return d[0] >= d[1] && d[0] >= d[2] ? 0 : (d[1] >= d[2] ? 1 : 2);
+    }
+};
+
 struct Bins {
-    Aabb box[3][kBins];
+    Float4 lo[3][kBins], hi[3][kBins];
     int count[3][kBins] = {};
 
+    Bins() {
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < kBins; ++b) lo[a][b] = Float4{} + kInfinity<float>, hi[a][b] = -lo[a][b];
+    }
     void add(const Bins& o) {
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < kBins; ++b) {
-                box[a][b].grow(o.box[a][b]);
+                lo[a][b] = min4(lo[a][b], o.lo[a][b]);
+                hi[a][b] = max4(hi[a][b], o.hi[a][b]);
                 count[a][b] += o.count[a][b];
             }
+    }
+};
+
+// Half the surface area of the box [lo, hi] (0 for an empty one).
+double half_area(Float4 lo, Float4 hi) {
+    if (!(lo[0] <= hi[0])) return 0;
+    const double x = double(hi[0]) - lo[0], y = double(hi[1]) - lo[1], z = double(hi[2]) - lo[2];
+    return x * y + y * z + z * x;
+}
+
+// Which of the kBins bins along each axis a centroid falls in: the bins
+// split [origin, origin + kBins / scale) evenly. The same floats bin a range
+// and then partition it.
+struct BinGrid {
+    Float4 origin, scale;  // scale 0: an axis with no extent, not binned
+
+    Int4 bins_of(Float4 centroid) const {
+        const Int4 b = __builtin_convertvector((centroid - origin) * scale, Int4);
+        const Int4 low = b < 0 ? Int4{} : b;
+        return low > kBins - 1 ? Int4{} + (kBins - 1) : low;
     }
 };
 
@@ -65,28 +127,31 @@ struct Split {
     int axis = -1;
     int bin = 0;  // primitives in bins < bin go left
     double cost = kInfinity<double>;
+    BinGrid grid;
 };
 
 // A subtree under construction: its nodes, and the slots of its parents
 // still waiting for a subtree built elsewhere.
 struct Pending {
     int begin, end;
-    Aabb bounds, centroid_bounds;
+    Aabb bounds;
+    CentroidBounds centroid_bounds;
     int depth;
     int parent, slot;  // nodes[parent].first (slot 0) or .second (slot 1)
 };
 
 class Builder {
 public:
-    Builder(const std::vector<Aabb>& boxes, const std::vector<dvec3>& centroids, BigArray<std::int32_t>& prims,
+    Builder(const std::vector<Aabb>& boxes, const std::vector<BinnedPrim>& binned, BigArray<std::int32_t>& prims,
             int max_leaf, ThreadPool* pool)
-        : boxes_(boxes), centroids_(centroids), prims_(prims), max_leaf_(max_leaf), pool_(pool) {}
+        : boxes_(boxes), binned_(binned), prims_(prims), max_leaf_(max_leaf), pool_(pool),
+          subtree_size_(subtree_size(int(prims.size()), pool ? pool->size() : 1)) {}
 
     // Builds [begin, end) into nodes (its root at the returned index); with
-    // defer, ranges smaller than kSubtreeSize go to `pending` instead.
-    int build(BigArray<BvhNode>& nodes, int begin, int end, const Aabb& bounds, const Aabb& centroids,
+    // defer, ranges smaller than subtree_size_ go to `pending` instead.
+    int build(BigArray<BvhNode>& nodes, int begin, int end, const Aabb& bounds, const CentroidBounds& centroids,
               int depth, bool defer, std::vector<Pending>* pending, int parent = -1, int slot = 0) {
-        if (defer && end - begin < kSubtreeSize) {
+        if (defer && end - begin < subtree_size_) {
             pending->push_back({begin, end, bounds, centroids, depth, parent, slot});
             return -1;
         }
@@ -103,15 +168,17 @@ public:
             nodes[size_t(index)].count = n;
             return index;
         }
-        int mid = split.axis < 0 ? begin : partition(begin, end, centroids, split);
+        int mid = split.axis < 0 ? begin : partition(begin, end, split);
         if (mid == begin || mid == end) {  // no useful plane: halve by count
             mid = begin + n / 2;
-            const int axis = widest_axis(centroids);
-            std::nth_element(prims_.begin() + begin, prims_.begin() + mid, prims_.begin() + end,
-                             [&](int a, int b) { return centroids_[size_t(a)][axis] < centroids_[size_t(b)][axis]; });
+            const int axis = centroids.widest_axis();
+            std::nth_element(prims_.begin() + begin, prims_.begin() + mid, prims_.begin() + end, [&](int a, int b) {
+                return binned_[size_t(a)].centroid[axis] < binned_[size_t(b)].centroid[axis];
+            });
         }
-        nodes[size_t(index)].axis = split.axis < 0 ? widest_axis(centroids) : split.axis;
-        Aabb lb, lc, rb, rc;
+        nodes[size_t(index)].axis = split.axis < 0 ? centroids.widest_axis() : split.axis;
+        Aabb lb, rb;
+        CentroidBounds lc, rc;
         range_bounds(begin, mid, lb, lc);
         range_bounds(mid, end, rb, rc);
         const int left = build(nodes, begin, mid, lb, lc, depth + 1, defer, pending, index, 0);
@@ -121,96 +188,88 @@ public:
         return index;
     }
 
-    void range_bounds(int begin, int end, Aabb& bounds, Aabb& centroids) const {
+    void range_bounds(int begin, int end, Aabb& bounds, CentroidBounds& centroids) const {
         for (int i = begin; i < end; ++i) {
             bounds.grow(boxes_[size_t(prims_[size_t(i)])]);
-            centroids.grow(centroids_[size_t(prims_[size_t(i)])]);
+            centroids.grow(binned_[size_t(prims_[size_t(i)])].centroid);
         }
     }
 
 private:
-    static int widest_axis(const Aabb& b) {
-        const dvec3 d = b.hi - b.lo;
-        return d.x >= d.y && d.x >= d.z ? 0 : (d.y >= d.z ? 1 : 2);
-    }
-
-    static int bin_of(const dvec3& c, int axis, const Aabb& cb, double scale) {
-        return std::clamp(int((c[axis] - cb.lo[axis]) * scale), 0, kBins - 1);
-    }
-
-    void bin_range(int begin, int end, const Aabb& cb, const double scale[3], Bins& bins) const {
+    void bin_range(int begin, int end, const BinGrid& grid, Bins& bins) const {
         for (int i = begin; i < end; ++i) {
-            const int p = prims_[size_t(i)];
+            const BinnedPrim& p = binned_[size_t(prims_[size_t(i)])];
+            const Int4 b = grid.bins_of(p.centroid);
             for (int a = 0; a < 3; ++a) {
-                if (scale[a] == 0) continue;
-                const int b = bin_of(centroids_[size_t(p)], a, cb, scale[a]);
-                bins.box[a][b].grow(boxes_[size_t(p)]);
-                ++bins.count[a][b];
+                bins.lo[a][b[a]] = min4(bins.lo[a][b[a]], p.lo);
+                bins.hi[a][b[a]] = max4(bins.hi[a][b[a]], p.hi);
+                ++bins.count[a][b[a]];
             }
         }
     }
 
     // The cheapest of the 3 x 15 bin boundaries; the binning of a large range
     // is spread over the pool.
-    Split best_split(int begin, int end, const Aabb& cb, bool parallel) const {
-        double scale[3];
-        for (int a = 0; a < 3; ++a) {
-            const double extent = cb.hi[a] - cb.lo[a];
-            scale[a] = extent > 0 ? kBins / extent : 0;
-        }
+    Split best_split(int begin, int end, const CentroidBounds& cb, bool parallel) const {
+        BinGrid grid{cb.lo, Float4{}};
+        const Float4 extent = cb.hi - cb.lo;
+        for (int a = 0; a < 3; ++a) grid.scale[a] = extent[a] > 0 ? float(kBins) / extent[a] : 0.0f;
         Bins bins;
         const int n = end - begin;
-        if (parallel && pool_ && n >= 2 * kSubtreeSize) {
+        if (parallel && pool_ && n >= 2 * subtree_size_) {
             const int chunks = 4 * pool_->size();
             std::vector<Bins> partial(static_cast<size_t>(chunks));
             pool_->parallel_for(chunks, [&](int c, int) {
                 bin_range(begin + int(std::int64_t(n) * c / chunks), begin + int(std::int64_t(n) * (c + 1) / chunks),
-                          cb, scale, partial[size_t(c)]);
+                          grid, partial[size_t(c)]);
             });
             for (const Bins& b : partial) bins.add(b);
         } else {
-            bin_range(begin, end, cb, scale, bins);
+            bin_range(begin, end, grid, bins);
         }
         Split best;
+        best.grid = grid;
         for (int a = 0; a < 3; ++a) {
-            if (scale[a] == 0) continue;
+            if (grid.scale[a] == 0) continue;
             // right[b]: the bins b .. kBins-1 together.
             double right_area[kBins];
             int right_count[kBins];
-            Aabb acc;
+            Float4 lo = Float4{} + kInfinity<float>, hi = -lo;
             int count = 0;
             for (int b = kBins - 1; b > 0; --b) {
-                acc.grow(bins.box[a][b]);
+                lo = min4(lo, bins.lo[a][b]);
+                hi = max4(hi, bins.hi[a][b]);
                 count += bins.count[a][b];
-                right_area[b] = acc.half_area();
+                right_area[b] = half_area(lo, hi);
                 right_count[b] = count;
             }
-            acc = Aabb{};
+            lo = Float4{} + kInfinity<float>, hi = -lo;
             count = 0;
             for (int b = 1; b < kBins; ++b) {
-                acc.grow(bins.box[a][b - 1]);
+                lo = min4(lo, bins.lo[a][b - 1]);
+                hi = max4(hi, bins.hi[a][b - 1]);
                 count += bins.count[a][b - 1];
                 if (count == 0 || right_count[b] == 0) continue;
-                const double cost = acc.half_area() * count + right_area[b] * right_count[b];
-                if (cost < best.cost) best = {a, b, cost};
+                const double cost = half_area(lo, hi) * count + right_area[b] * right_count[b];
+                if (cost < best.cost) best = {a, b, cost, grid};
             }
         }
         return best;
     }
 
-    int partition(int begin, int end, const Aabb& cb, const Split& s) const {
-        const double scale = kBins / (cb.hi[s.axis] - cb.lo[s.axis]);
+    int partition(int begin, int end, const Split& s) const {
         const auto mid = std::partition(prims_.begin() + begin, prims_.begin() + end, [&](int p) {
-            return bin_of(centroids_[size_t(p)], s.axis, cb, scale) < s.bin;
+            return s.grid.bins_of(binned_[size_t(p)].centroid)[s.axis] < s.bin;
         });
         return int(mid - prims_.begin());
     }
 
     const std::vector<Aabb>& boxes_;
-    const std::vector<dvec3>& centroids_;
+    const std::vector<BinnedPrim>& binned_;
     BigArray<std::int32_t>& prims_;
     int max_leaf_;
     ThreadPool* pool_;
+    int subtree_size_;
 };
 
 }  // namespace
@@ -221,17 +280,18 @@ Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool, int max_leaf) {
                                     std::to_string(kMaxLeafSize));
     const auto start = std::chrono::steady_clock::now();
     Bvh bvh;
-    std::vector<dvec3> centroids(boxes.size());
+    std::vector<BinnedPrim> binned(boxes.size());
     for (size_t i = 0; i < boxes.size(); ++i) {
-        centroids[i] = boxes[i].center();
+        binned[i] = {to_float4(boxes[i].lo), to_float4(boxes[i].hi), to_float4(boxes[i].center())};
         if (!boxes[i].empty()) bvh.prims.push_back(std::int32_t(i));
     }
     if (bvh.prims.empty()) return bvh;
-    Builder builder(boxes, centroids, bvh.prims, max_leaf, pool);
-    Aabb bounds, centroid_bounds;
+    Builder builder(boxes, binned, bvh.prims, max_leaf, pool);
+    Aabb bounds;
+    CentroidBounds centroid_bounds;
     builder.range_bounds(0, int(bvh.prims.size()), bounds, centroid_bounds);
 
-    // The top of the tree here, the subtrees below kSubtreeSize on the pool,
+    // The top of the tree here, the subtrees below subtree_size on the pool,
     // each into nodes of its own, then appended.
     std::vector<Pending> pending;
     builder.build(bvh.nodes, 0, int(bvh.prims.size()), bounds, centroid_bounds, 0, true, &pending);
