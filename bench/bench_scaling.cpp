@@ -4,7 +4,10 @@
 // on a floor, Lambert + ambient + one directional light with shadows, camera
 // at (0, -12, 6) looking along (0, 12, -6), 800 x 800, 1 sample per pixel.
 // Prints one CSV row per size: triangles, prepare ms (flattening + BVH),
-// BVH build ms, median render ms, rays per second, peak memory so far.
+// BVH build ms, median render ms, rays per second, peak memory so far, and
+// the instructions a frame executes (millions, all threads; empty where the
+// kernel does not let a process count its own): the work apart from the
+// time, which also holds the waits for memory.
 //   firsthit_bench_scaling [--threads N] [--runs K] [--min-level K] [--max-level K] [--precision float|double]
 #include <algorithm>
 #include <chrono>
@@ -13,6 +16,10 @@
 #include <fstream>
 #include <string>
 #include <vector>
+
+#include <linux/perf_event.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 #include "geometry/icosphere.h"
 #include "render/prepared_scene.h"
@@ -45,6 +52,35 @@ Scene scaling_scene(int level) {
     return s;
 }
 
+// Instructions retired in user space by this process and the threads it
+// starts after the counter (the pool's workers; the kernel sums them in).
+class InstructionCounter {
+public:
+    InstructionCounter() {
+        perf_event_attr a{};
+        a.type = PERF_TYPE_HARDWARE;
+        a.size = sizeof a;
+        a.config = PERF_COUNT_HW_INSTRUCTIONS;
+        a.exclude_kernel = 1;
+        a.exclude_hv = 1;
+        a.inherit = 1;
+        fd_ = int(syscall(SYS_perf_event_open, &a, 0, -1, -1, 0));
+    }
+    ~InstructionCounter() {
+        if (fd_ >= 0) close(fd_);
+    }
+    InstructionCounter(const InstructionCounter&) = delete;
+    InstructionCounter& operator=(const InstructionCounter&) = delete;
+    // -1: not counting.
+    long long read() const {
+        long long v = -1;
+        return fd_ >= 0 && ::read(fd_, &v, sizeof v) == sizeof v ? v : -1;
+    }
+
+private:
+    int fd_ = -1;
+};
+
 double peak_rss_mb() {
     std::ifstream status("/proc/self/status");
     std::string line;
@@ -66,25 +102,32 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--precision"))
             precision = std::strcmp(argv[i + 1], "float") ? Precision::float64 : Precision::float32;
     }
+    const InstructionCounter instructions;  // before the pool: its workers count too
     ThreadPool pool(threads);
     RenderSettings settings;
     settings.precision = precision;
     settings.effects.specular = false;
     settings.effects.glazing = false;
-    std::printf("triangles,prepare_ms,bvh_build_ms,bvh_nodes,render_ms,rays_per_second,peak_rss_mb\n");
+    std::printf("triangles,prepare_ms,bvh_build_ms,bvh_nodes,render_ms,rays_per_second,peak_rss_mb,"
+                "minstructions_per_frame\n");
     for (int level = std::max(1, min_level); level <= max_level; ++level) {
         const Scene scene = scaling_scene(level);
         const PreparedScene prepared(scene, settings, &pool);
         std::vector<double> ms;
         FrameResult r = prepared.render(scene.cameras[0], &pool);  // warm-up
+        const long long before = instructions.read();
         for (int k = 0; k < runs; ++k) {
             r = prepared.render(scene.cameras[0], &pool);
             ms.push_back(r.render_ms);
         }
+        const long long after = instructions.read();
+        char per_frame[32] = "";
+        if (before >= 0 && after >= before)
+            std::snprintf(per_frame, sizeof per_frame, "%.2f", double(after - before) / runs / 1e6);
         const double m = median(ms);
-        std::printf("%zu,%.3f,%.3f,%d,%.3f,%.4g,%.1f\n", scene.triangles.size(), prepared.build_ms(),
+        std::printf("%zu,%.3f,%.3f,%d,%.3f,%.4g,%.1f,%s\n", scene.triangles.size(), prepared.build_ms(),
                     prepared.bvh_build_ms(), prepared.bvh_nodes(), m, double(r.counts.total()) / (m / 1000),
-                    peak_rss_mb());
+                    peak_rss_mb(), per_frame);
         std::fflush(stdout);
     }
     return 0;

@@ -618,7 +618,10 @@ int main(int argc, char** argv) {
     rtcSetDeviceErrorFunction(device, on_error, nullptr);
     const long version = long(rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_VERSION));
     const Blocks native = native_blocks(device);
-    const Blocks blocks = width == 16 ? blocks_of<16>() : width == 8 ? blocks_of<8>() : width == 4 ? blocks_of<4>() : native;
+    const Blocks blocks = width == 16 ? blocks_of<16>()
+                          : width == 8 ? blocks_of<8>()
+                          : width == 4 ? blocks_of<4>()
+                                       : native;
     std::fprintf(stderr, "# Embree %ld.%ld.%ld, %d-wide packets (%s; native: %d), tasking: %s, threads: %d\n",
                  version / 10000, version / 100 % 100, version % 100, blocks.width,
                  blocks.width > native.width ? "emulated" : "native", native.width,

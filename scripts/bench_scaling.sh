@@ -68,6 +68,23 @@ if [[ $have_embree == 1 ]]; then
      '$out/scaling_embree.csv' skip 1 using 2:(strcol(1) eq 'bunny' ? 1/0 : \$4) with linespoints lw 2 pt 13 title 'Embree 3, native packets: render (per frame)', \\
      '' skip 1 using 2:(strcol(1) eq 'bunny' ? \$4 : 1/0) with points pt 13 ps 2 title 'Stanford bunny: Embree 3 render'"
 fi
+# Growth from 10^3 to 10^6 triangles (the rows of 1,280 and 1,310,720), time
+# and, where counted, instructions a frame: the work against the waits.
+growth() {  # CSV, label, triangles column, time column, instructions column (0: none)
+  awk -F, -v label="$2" -v tc="$3" -v mc="$4" -v ic="$5" '
+    $tc == 1280 {t0 = $mc; i0 = ic ? $ic : ""}
+    $tc == 1310720 {t1 = $mc; i1 = ic ? $ic : ""}
+    END {
+      if (t0 == "" || t1 == "") exit
+      line = sprintf("bench_scaling.sh: 1,280 -> 1,310,720 triangles, %s: time x%.2f", label, t1 / t0)
+      if (i0 != "" && i1 != "") line = line sprintf(", instructions x%.2f", i1 / i0)
+      print line
+    }' "$1"
+}
+growth "$out/scaling.csv" "firsthit double" 1 5 8
+growth "$out/scaling_float.csv" "firsthit float" 1 5 8
+[[ $have_embree == 1 ]] && growth "$out/scaling_embree.csv" "Embree 3" 2 4 0
+
 if command -v gnuplot >/dev/null; then
   gnuplot <<PLOT
 set terminal pngcairo size 900,560 font ",11"
