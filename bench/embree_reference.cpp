@@ -194,58 +194,41 @@ struct Counts {
 };
 
 // A packet's rays, by width: Embree's ray structures and calls for packets
-// of 4, 8 and 16, and the pixel block a packet covers (4 x 4, 4 x 2, 2 x 2).
-// The frame uses the widest packets this CPU's Embree traces natively
-// (16 with AVX-512, 8 with AVX2), as firsthit's packets follow the CPU's
-// vector width: Embree emulates a wider packet ray by ray.
+// of 4, 8 and 16, the pixel block a packet covers (4 x 4, 4 x 2, 2 x 2), and
+// W lanes as one value (GCC's vector extensions: one register of the
+// packet's width) for the code around the Embree calls. The frame uses the
+// widest packets this CPU's Embree traces natively (16 with AVX-512, 8 with
+// AVX2), as firsthit's packets follow the CPU's vector width: Embree
+// emulates a wider packet ray by ray.
+template <typename RayHitT, typename RayT, typename VFT, typename VIT, int BlockX,
+          void (*Intersect)(const int*, RTCScene, RTCIntersectContext*, RayHitT*),
+          void (*Occluded)(const int*, RTCScene, RTCIntersectContext*, RayT*)>
+struct PacketOf {
+    using RayHit = RayHitT;
+    using Ray = RayT;
+    using VF = VFT;
+    using VI = VIT;
+    static constexpr int kBlockX = BlockX;
+    static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { Intersect(v, s, c, r); }
+    static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { Occluded(v, s, c, r); }
+};
+// (Vector types spelled out per width: GCC drops a vector_size that depends
+// on a template parameter.)
+typedef float VF16 __attribute__((vector_size(64)));
+typedef std::int32_t VI16 __attribute__((vector_size(64)));
+typedef float VF8 __attribute__((vector_size(32)));
+typedef std::int32_t VI8 __attribute__((vector_size(32)));
+typedef float VF4 __attribute__((vector_size(16)));
+typedef std::int32_t VI4 __attribute__((vector_size(16)));
 template <int W>
 struct Packet;
 template <>
-struct Packet<16> {
-    using RayHit = RTCRayHit16;
-    using Ray = RTCRay16;
-    static constexpr int kBlockX = 4;
-    static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { rtcIntersect16(v, s, c, r); }
-    static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { rtcOccluded16(v, s, c, r); }
-};
+struct Packet<16> : PacketOf<RTCRayHit16, RTCRay16, VF16, VI16, 4, rtcIntersect16, rtcOccluded16> {};
 template <>
-struct Packet<8> {
-    using RayHit = RTCRayHit8;
-    using Ray = RTCRay8;
-    static constexpr int kBlockX = 4;
-    static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { rtcIntersect8(v, s, c, r); }
-    static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { rtcOccluded8(v, s, c, r); }
-};
+struct Packet<8> : PacketOf<RTCRayHit8, RTCRay8, VF8, VI8, 4, rtcIntersect8, rtcOccluded8> {};
 template <>
-struct Packet<4> {
-    using RayHit = RTCRayHit4;
-    using Ray = RTCRay4;
-    static constexpr int kBlockX = 2;
-    static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { rtcIntersect4(v, s, c, r); }
-    static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { rtcOccluded4(v, s, c, r); }
-};
+struct Packet<4> : PacketOf<RTCRayHit4, RTCRay4, VF4, VI4, 2, rtcIntersect4, rtcOccluded4> {};
 
-// W lanes as one value (GCC's vector extensions: one register of the
-// packet's width), for the code around the Embree calls.
-// (Spelled out per width: GCC drops a vector_size that depends on a
-// template parameter.)
-template <int W>
-struct Lanes;
-template <>
-struct Lanes<16> {
-    using VF = float __attribute__((vector_size(64)));
-    using VI = std::int32_t __attribute__((vector_size(64)));
-};
-template <>
-struct Lanes<8> {
-    using VF = float __attribute__((vector_size(32)));
-    using VI = std::int32_t __attribute__((vector_size(32)));
-};
-template <>
-struct Lanes<4> {
-    using VF = float __attribute__((vector_size(16)));
-    using VI = std::int32_t __attribute__((vector_size(16)));
-};
 template <typename V>
 inline V load(const void* p) {
     V v;
@@ -292,8 +275,8 @@ template <int W>
 void trace_block(RTCScene scene, const SceneSpec& spec, const CameraRays& cam, int bx, int by,
                  fh::Image& image, Counts& counts) {
     using P = Packet<W>;
-    using VF = typename Lanes<W>::VF;
-    using VI = typename Lanes<W>::VI;
+    using VF = typename P::VF;
+    using VI = typename P::VI;
     constexpr int kShift = P::kBlockX == 4 ? 2 : 1;
     VI lane;
     for (int i = 0; i < W; ++i) lane[i] = i;
