@@ -117,9 +117,11 @@ struct BinGrid {
     Float4 origin, scale;  // scale 0: an axis with no extent, not binned
 
     Int4 bins_of(Float4 centroid) const {
-        const Int4 b = __builtin_convertvector((centroid - origin) * scale, Int4);
-        const Int4 low = b < 0 ? Int4{} : b;
-        return low > kBins - 1 ? Int4{} + (kBins - 1) : low;
+        // Clamped before the conversion, which leaves no value out of int's
+        // range; NaN (a coordinate beyond float's range: inf - inf) to bin 0.
+        const Float4 f = (centroid - origin) * scale;
+        const Float4 low = f >= 0.0f ? f : Float4{};
+        return __builtin_convertvector(low < float(kBins - 1) ? low : Float4{} + float(kBins - 1), Int4);
     }
 };
 

@@ -4,7 +4,9 @@
 // in float and double; and no ray slips through a closed mesh.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <string>
 
 #include "geometry/icosphere.h"
 #include "render/bvh.h"
@@ -209,9 +211,42 @@ TYPED_TEST(BvhAgainstBruteForce, NoRayLeaksThroughAClosedMesh) {
     EXPECT_EQ(leaks, 0);
 }
 
-// Built on the pool or alone, from a million boxes or a few: every box is in
-// exactly one leaf, each leaf's box holds its boxes, and every node's box
-// holds its children's.
+// What every tree must be, checked against its input: every box is in
+// exactly one leaf of at most max_leaf, each leaf's box holds its boxes, and
+// every node's box holds its children's. Returns the largest leaf.
+int expect_a_valid_tree(const std::vector<Aabb>& boxes, const Bvh& bvh, int max_leaf, const std::string& what) {
+    const size_t n = boxes.size();
+    std::vector<int> seen(n, 0);
+    auto inside = [](const BvhNode& outer, const Aabb& b) {
+        for (int a = 0; a < 3; ++a)
+            if (!(outer.lo[a] <= b.lo[a] && b.hi[a] <= outer.hi[a])) return false;
+        return true;
+    };
+    long bad = 0;
+    int largest = 0;
+    for (const BvhNode& node : bvh.nodes) {
+        if (node.leaf()) {
+            EXPECT_LE(node.count, max_leaf) << what;
+            largest = std::max(largest, node.count);
+            for (int k = node.first; k < node.first + node.count; ++k) {
+                const int i = bvh.prims[size_t(k)];
+                ++seen[size_t(i)];
+                bad += !inside(node, boxes[size_t(i)]);
+            }
+        } else {
+            for (const int c : {node.first, node.second}) {
+                const BvhNode& child = bvh.nodes[size_t(c)];
+                Aabb cb{{child.lo[0], child.lo[1], child.lo[2]}, {child.hi[0], child.hi[1], child.hi[2]}};
+                bad += !inside(node, cb);
+            }
+        }
+    }
+    EXPECT_EQ(bad, 0) << what;
+    EXPECT_EQ(size_t(std::count(seen.begin(), seen.end(), 1)), n) << what;
+    return largest;
+}
+
+// Built on the pool or alone, from a million boxes or a few.
 TEST(Bvh, EveryBoxInOneLeafInsideEveryBoxAboveIt) {
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> u(-100, 100), size(0, 3);
@@ -224,36 +259,36 @@ TEST(Bvh, EveryBoxInOneLeafInsideEveryBoxAboveIt) {
         }
         for (ThreadPool* p : {static_cast<ThreadPool*>(nullptr), &pool}) {
             const int max_leaf = p ? kMaxLeafSize : 8;  // the double tracer's and the largest
-            const Bvh bvh = build_bvh(boxes, p, max_leaf);
-            std::vector<int> seen(static_cast<size_t>(n), 0);
-            auto inside = [](const BvhNode& outer, const Aabb& b) {
-                for (int a = 0; a < 3; ++a)
-                    if (!(outer.lo[a] <= b.lo[a] && b.hi[a] <= outer.hi[a])) return false;
-                return true;
-            };
-            long bad = 0;
-            int largest = 0;
-            for (const BvhNode& node : bvh.nodes) {
-                if (node.leaf()) {
-                    EXPECT_LE(node.count, max_leaf);
-                    largest = std::max(largest, node.count);
-                    for (int k = node.first; k < node.first + node.count; ++k) {
-                        const int i = bvh.prims[size_t(k)];
-                        ++seen[size_t(i)];
-                        bad += !inside(node, boxes[size_t(i)]);
-                    }
-                } else {
-                    for (const int c : {node.first, node.second}) {
-                        const BvhNode& child = bvh.nodes[size_t(c)];
-                        Aabb cb{{child.lo[0], child.lo[1], child.lo[2]}, {child.hi[0], child.hi[1], child.hi[2]}};
-                        bad += !inside(node, cb);
-                    }
-                }
-            }
-            EXPECT_EQ(bad, 0) << n;
-            EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), n) << n;
+            const int largest = expect_a_valid_tree(boxes, build_bvh(boxes, p, max_leaf), max_leaf, std::to_string(n));
             if (n == 7) EXPECT_EQ(largest, 7) << "seven boxes: one leaf, not worth a split";
         }
+    }
+}
+
+// The split search bins in floats (render/bvh.cpp): boxes beyond float's
+// range (their centroids infinite there, some differences NaN), and boxes
+// whose centroids float cannot tell apart, still make a valid tree of
+// leaves no larger than asked -- only the planes' ranking is in float.
+TEST(Bvh, BoxesBeyondFloatOrTooCloseForItStillMakeAValidTree) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    ThreadPool pool(2);
+    std::vector<Aabb> huge, close;
+    for (int i = 0; i < 3000; ++i) {
+        const double scale = i % 3 == 0 ? 1e300 : i % 3 == 1 ? -1e300 : 10;
+        Aabb b;
+        b.grow(scale * dvec3(u(rng), u(rng), u(rng)));
+        b.grow(b.lo + dvec3(1));
+        huge.push_back(b);
+        // 1e7 + a millionth: one float, three thousand doubles.
+        Aabb c;
+        c.grow(dvec3(1e7) + 1e-6 * dvec3(i, -i, 2 * i));
+        c.grow(c.lo + dvec3(1e-7));
+        close.push_back(c);
+    }
+    for (ThreadPool* p : {static_cast<ThreadPool*>(nullptr), &pool}) {
+        expect_a_valid_tree(huge, build_bvh(huge, p, 8), 8, "beyond float");
+        expect_a_valid_tree(close, build_bvh(close, p, 8), 8, "too close for float");
     }
 }
 
