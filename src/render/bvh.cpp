@@ -67,17 +67,23 @@ Float4 min4(Float4 a, Float4 b) { return b < a ? b : a; }
 Float4 max4(Float4 a, Float4 b) { return a < b ? b : a; }
 Float4 to_float4(const dvec3& v) { return Float4{float(v.x), float(v.y), float(v.z), 0.0f}; }
 
-struct BinnedPrim {
-    Float4 lo, hi, centroid;
-};
+// A box in floats: a primitive's, a bin's, or a range's centroids'.
+struct Box4 {
+    Float4 lo = Float4{} + kInfinity<float>, hi = -lo;  // empty
 
-// The box of a range's centroids.
-struct CentroidBounds {
-    Float4 lo = Float4{} + kInfinity<float>, hi = -lo;
-
-    void grow(Float4 c) {
-        lo = min4(lo, c);
-        hi = max4(hi, c);
+    void grow(Float4 p) {
+        lo = min4(lo, p);
+        hi = max4(hi, p);
+    }
+    void grow(const Box4& b) {
+        lo = min4(lo, b.lo);
+        hi = max4(hi, b.hi);
+    }
+    // Half the surface area (0 for an empty box): what the heuristic compares.
+    double half_area() const {
+        if (!(lo[0] <= hi[0])) return 0;
+        const double x = double(hi[0]) - lo[0], y = double(hi[1]) - lo[1], z = double(hi[2]) - lo[2];
+        return x * y + y * z + z * x;
     }
     int widest_axis() const {
         const Float4 d = hi - lo;
@@ -85,30 +91,23 @@ struct CentroidBounds {
     }
 };
 
+struct BinnedPrim {
+    Box4 box;
+    Float4 centroid;
+};
+
 struct Bins {
-    Float4 lo[3][kBins], hi[3][kBins];
+    Box4 box[3][kBins];
     int count[3][kBins] = {};
 
-    Bins() {
-        for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < kBins; ++b) lo[a][b] = Float4{} + kInfinity<float>, hi[a][b] = -lo[a][b];
-    }
     void add(const Bins& o) {
         for (int a = 0; a < 3; ++a)
             for (int b = 0; b < kBins; ++b) {
-                lo[a][b] = min4(lo[a][b], o.lo[a][b]);
-                hi[a][b] = max4(hi[a][b], o.hi[a][b]);
+                box[a][b].grow(o.box[a][b]);
                 count[a][b] += o.count[a][b];
             }
     }
 };
-
-// Half the surface area of the box [lo, hi] (0 for an empty one).
-double half_area(Float4 lo, Float4 hi) {
-    if (!(lo[0] <= hi[0])) return 0;
-    const double x = double(hi[0]) - lo[0], y = double(hi[1]) - lo[1], z = double(hi[2]) - lo[2];
-    return x * y + y * z + z * x;
-}
 
 // Which of the kBins bins along each axis a centroid falls in: the bins
 // split [origin, origin + kBins / scale) evenly. The same floats bin a range
@@ -137,7 +136,7 @@ struct Split {
 struct Pending {
     int begin, end;
     Aabb bounds;
-    CentroidBounds centroid_bounds;
+    Box4 centroid_bounds;
     int depth;
     int parent, slot;  // nodes[parent].first (slot 0) or .second (slot 1)
 };
@@ -151,7 +150,7 @@ public:
 
     // Builds [begin, end) into nodes (its root at the returned index); with
     // defer, ranges smaller than subtree_size_ go to `pending` instead.
-    int build(BigArray<BvhNode>& nodes, int begin, int end, const Aabb& bounds, const CentroidBounds& centroids,
+    int build(BigArray<BvhNode>& nodes, int begin, int end, const Aabb& bounds, const Box4& centroids,
               int depth, bool defer, std::vector<Pending>* pending, int parent = -1, int slot = 0) {
         if (defer && end - begin < subtree_size_) {
             pending->push_back({begin, end, bounds, centroids, depth, parent, slot});
@@ -180,7 +179,7 @@ public:
         }
         nodes[size_t(index)].axis = split.axis < 0 ? centroids.widest_axis() : split.axis;
         Aabb lb, rb;
-        CentroidBounds lc, rc;
+        Box4 lc, rc;
         range_bounds(begin, mid, lb, lc);
         range_bounds(mid, end, rb, rc);
         const int left = build(nodes, begin, mid, lb, lc, depth + 1, defer, pending, index, 0);
@@ -190,7 +189,7 @@ public:
         return index;
     }
 
-    void range_bounds(int begin, int end, Aabb& bounds, CentroidBounds& centroids) const {
+    void range_bounds(int begin, int end, Aabb& bounds, Box4& centroids) const {
         for (int i = begin; i < end; ++i) {
             bounds.grow(boxes_[size_t(prims_[size_t(i)])]);
             centroids.grow(binned_[size_t(prims_[size_t(i)])].centroid);
@@ -203,8 +202,7 @@ private:
             const BinnedPrim& p = binned_[size_t(prims_[size_t(i)])];
             const Int4 b = grid.bins_of(p.centroid);
             for (int a = 0; a < 3; ++a) {
-                bins.lo[a][b[a]] = min4(bins.lo[a][b[a]], p.lo);
-                bins.hi[a][b[a]] = max4(bins.hi[a][b[a]], p.hi);
+                bins.box[a][b[a]].grow(p.box);
                 ++bins.count[a][b[a]];
             }
         }
@@ -212,7 +210,7 @@ private:
 
     // The cheapest of the 3 x 15 bin boundaries; the binning of a large range
     // is spread over the pool.
-    Split best_split(int begin, int end, const CentroidBounds& cb, bool parallel) const {
+    Split best_split(int begin, int end, const Box4& cb, bool parallel) const {
         BinGrid grid{cb.lo, Float4{}};
         const Float4 extent = cb.hi - cb.lo;
         for (int a = 0; a < 3; ++a) grid.scale[a] = extent[a] > 0 ? float(kBins) / extent[a] : 0.0f;
@@ -236,23 +234,21 @@ private:
             // right[b]: the bins b .. kBins-1 together.
             double right_area[kBins];
             int right_count[kBins];
-            Float4 lo = Float4{} + kInfinity<float>, hi = -lo;
+            Box4 acc;
             int count = 0;
             for (int b = kBins - 1; b > 0; --b) {
-                lo = min4(lo, bins.lo[a][b]);
-                hi = max4(hi, bins.hi[a][b]);
+                acc.grow(bins.box[a][b]);
                 count += bins.count[a][b];
-                right_area[b] = half_area(lo, hi);
+                right_area[b] = acc.half_area();
                 right_count[b] = count;
             }
-            lo = Float4{} + kInfinity<float>, hi = -lo;
+            acc = Box4{};
             count = 0;
             for (int b = 1; b < kBins; ++b) {
-                lo = min4(lo, bins.lo[a][b - 1]);
-                hi = max4(hi, bins.hi[a][b - 1]);
+                acc.grow(bins.box[a][b - 1]);
                 count += bins.count[a][b - 1];
                 if (count == 0 || right_count[b] == 0) continue;
-                const double cost = half_area(lo, hi) * count + right_area[b] * right_count[b];
+                const double cost = acc.half_area() * count + right_area[b] * right_count[b];
                 if (cost < best.cost) best = {a, b, cost, grid};
             }
         }
@@ -284,13 +280,13 @@ Bvh build_bvh(const std::vector<Aabb>& boxes, ThreadPool* pool, int max_leaf) {
     Bvh bvh;
     std::vector<BinnedPrim> binned(boxes.size());
     for (size_t i = 0; i < boxes.size(); ++i) {
-        binned[i] = {to_float4(boxes[i].lo), to_float4(boxes[i].hi), to_float4(boxes[i].center())};
+        binned[i] = {{to_float4(boxes[i].lo), to_float4(boxes[i].hi)}, to_float4(boxes[i].center())};
         if (!boxes[i].empty()) bvh.prims.push_back(std::int32_t(i));
     }
     if (bvh.prims.empty()) return bvh;
     Builder builder(boxes, binned, bvh.prims, max_leaf, pool);
     Aabb bounds;
-    CentroidBounds centroid_bounds;
+    Box4 centroid_bounds;
     builder.range_bounds(0, int(bvh.prims.size()), bounds, centroid_bounds);
 
     // The top of the tree here, the subtrees below subtree_size on the pool,

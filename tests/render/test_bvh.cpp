@@ -280,7 +280,7 @@ TEST(Bvh, BoxesBeyondFloatOrTooCloseForItStillMakeAValidTree) {
         b.grow(scale * dvec3(u(rng), u(rng), u(rng)));
         b.grow(b.lo + dvec3(1));
         huge.push_back(b);
-        // 1e7 + a millionth: one float, three thousand doubles.
+        // 1e7 plus a few thousandths: one float, three thousand doubles.
         Aabb c;
         c.grow(dvec3(1e7) + 1e-6 * dvec3(i, -i, 2 * i));
         c.grow(c.lo + dvec3(1e-7));
