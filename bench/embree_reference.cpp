@@ -277,10 +277,9 @@ void trace_block(RTCScene scene, const SceneSpec& spec, const CameraRays& cam, i
     using P = Packet<W>;
     using VF = typename P::VF;
     using VI = typename P::VI;
-    constexpr int kShift = P::kBlockX == 4 ? 2 : 1;
     VI lane;
     for (int i = 0; i < W; ++i) lane[i] = i;
-    const VI xi = bx + (lane & (P::kBlockX - 1)), yi = by + (lane >> kShift);
+    const VI xi = bx + lane % P::kBlockX, yi = by + lane / P::kBlockX;
     const VI valid = (xi < kWidth) & (yi < kHeight);
     // Lanes past the image's edge repeat its last pixel, inactive.
     const VF px = __builtin_convertvector(xi < kWidth ? xi : kWidth - 1, VF) + 0.5f;
@@ -467,20 +466,21 @@ private:
 
 // How a frame traces its blocks: the packet width W and trace_block<W>.
 struct Blocks {
-    int width = 16;  // W
-    int block_x = 4, block_y = 4;
-    void (*trace)(RTCScene, const SceneSpec&, const CameraRays&, int, int, fh::Image&, Counts&) = trace_block<16>;
+    int width;  // W
+    int block_x, block_y;
+    void (*trace)(RTCScene, const SceneSpec&, const CameraRays&, int, int, fh::Image&, Counts&);
 };
 template <int W>
 Blocks blocks_of() {
     return {W, Packet<W>::kBlockX, W / Packet<W>::kBlockX, trace_block<W>};
 }
+// width: 4, 8 or 16.
+Blocks blocks_of(int width) { return width == 16 ? blocks_of<16>() : width == 8 ? blocks_of<8>() : blocks_of<4>(); }
 
 // The widest packets Embree traces natively on this CPU (16, 8 or 4).
-Blocks native_blocks(RTCDevice device) {
-    if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED)) return blocks_of<16>();
-    if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED)) return blocks_of<8>();
-    return blocks_of<4>();
+int native_width(RTCDevice device) {
+    if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED)) return 16;
+    return rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) ? 8 : 4;
 }
 
 // One frame: 16 x 16 tiles handed out by an atomic counter to the threads.
@@ -568,7 +568,7 @@ Frame run(RTCDevice device, const SceneSpec& spec, const Blocks& blocks, Workers
 
 int main(int argc, char** argv) {
     int threads = 2, runs = 9, max_level = 8, width = 0;
-    bool verbose = false;
+    bool verbose = false, unknown = false;
     std::string png, bunny = std::string(FIRSTHIT_SOURCE_DIR) + "/animations/meshes/bunny00.off";
     for (int i = 1; i < argc; ++i) {
         const bool has_value = i + 1 < argc;
@@ -576,12 +576,11 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--runs") && has_value) runs = std::max(1, std::atoi(argv[++i]));
         else if (!std::strcmp(argv[i], "--max-level") && has_value) max_level = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--png") && has_value) png = argv[++i];
-        else if (!std::strcmp(argv[i], "--width") && has_value &&
-                 (!std::strcmp(argv[i + 1], "4") || !std::strcmp(argv[i + 1], "8") || !std::strcmp(argv[i + 1], "16")))
-            width = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--width") && has_value) width = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--bunny") && has_value) bunny = argv[++i];
         else if (!std::strcmp(argv[i], "--verbose")) verbose = true;
-        else {
+        else unknown = true;
+        if (unknown || (width != 0 && width != 4 && width != 8 && width != 16)) {
             std::fprintf(stderr,
                          "usage: firsthit_embree_reference [--threads N] [--runs K] [--max-level K] "
                          "[--png OUT.png] [--bunny FILE.off] [--width 4|8|16] [--verbose]\n");
@@ -600,14 +599,11 @@ int main(int argc, char** argv) {
     }
     rtcSetDeviceErrorFunction(device, on_error, nullptr);
     const long version = long(rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_VERSION));
-    const Blocks native = native_blocks(device);
-    const Blocks blocks = width == 16 ? blocks_of<16>()
-                          : width == 8 ? blocks_of<8>()
-                          : width == 4 ? blocks_of<4>()
-                                       : native;
+    const int native = native_width(device);
+    const Blocks blocks = blocks_of(width ? width : native);
     std::fprintf(stderr, "# Embree %ld.%ld.%ld, %d-wide packets (%s; native: %d), tasking: %s, threads: %d\n",
                  version / 10000, version / 100 % 100, version % 100, blocks.width,
-                 blocks.width > native.width ? "emulated" : "native", native.width,
+                 blocks.width > native ? "emulated" : "native", native,
                  rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_TASKING_SYSTEM) == 1 ? "TBB" : "internal/other",
                  threads);
 
