@@ -4,7 +4,7 @@
 //   build/bench/firsthit_bench --benchmark_filter=Png
 #include <benchmark/benchmark.h>
 
-#include "io/png_writer.h"
+#include "images/png_writer.h"
 #include "report_frame.h"
 
 namespace fh {

@@ -8,7 +8,7 @@
 
 #include <vector>
 
-#include "io/scene_loader.h"
+#include "yaml/scene_loader.h"
 #include "render/render.h"
 #include "render/shading.h"
 

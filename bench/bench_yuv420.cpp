@@ -1,10 +1,10 @@
-// RGB to yuv420p (io/yuv420.h) of one of the report's frames (Movie 1,
+// RGB to yuv420p (video/yuv420.h) of one of the report's frames (Movie 1,
 // frame 100, 800x800), as `make movies` converts every frame on the render
 // threads before streaming it to the encoder.
 //   build/bench/firsthit_bench --benchmark_filter=Yuv
 #include <benchmark/benchmark.h>
 
-#include "io/yuv420.h"
+#include "video/yuv420.h"
 #include "report_frame.h"
 
 namespace fh {

@@ -62,8 +62,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/icosphere.h"
-#include "io/mesh_loader.h"
-#include "io/png_writer.h"
+#include "meshes/mesh_loader.h"
+#include "images/png_writer.h"
 #include "render/image.h"
 
 #ifndef FIRSTHIT_SOURCE_DIR

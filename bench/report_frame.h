@@ -3,7 +3,7 @@
 #pragma once
 
 #include "anim/movie.h"
-#include "io/movie_loader.h"
+#include "yaml/movie_loader.h"
 #include "render/render.h"
 
 namespace fh {

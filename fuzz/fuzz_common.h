@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "io/input_error.h"
+#include "text/input_error.h"
 #include "render/render.h"
 #include "scene/scene.h"
 

@@ -13,7 +13,7 @@
 
 #include "anim/movie.h"
 #include "fuzz_common.h"
-#include "io/movie_loader.h"
+#include "yaml/movie_loader.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "fuzz_common.h"
-#include "io/scene_loader.h"
+#include "yaml/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);

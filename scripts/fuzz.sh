@@ -4,7 +4,7 @@
 # SECONDS (default 30) from the seed corpus in tests/fuzz/corpus/. Fails on any
 # crash, leak, timeout (10 s for one input) or out-of-memory; the input that
 # did it is kept in build-fuzz/artifacts/ (turn it into a regression test in
-# tests/io/). New inputs found go to build-fuzz/corpus/, never into tests/.
+# tests/yaml/). New inputs found go to build-fuzz/corpus/, never into tests/.
 #   bash scripts/fuzz.sh [SECONDS]
 set -euo pipefail
 seconds=${1:-30}

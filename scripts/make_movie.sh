@@ -15,7 +15,7 @@
 # also streams the frames, in order, as raw video into ffmpeg (encode.sh
 # --raw). In RGB24 that gives the same MP4 as encoding the PNGs afterwards
 # with as many encoder threads; in yuv420p the chroma is firsthit's 2x2 mean
-# (src/io/yuv420.h), within a few levels of ffmpeg's.
+# (src/video/yuv420.h), within a few levels of ffmpeg's.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 firsthit=${FIRSTHIT:-$here/../build/firsthit}

@@ -32,7 +32,7 @@ struct Movie {
     double fps = 30;
     double seconds = 10;
     std::vector<Animation> animations;
-    std::vector<std::string> warnings;  // the scene file's (io/scene_loader.h)
+    std::vector<std::string> warnings;  // the scene file's (yaml/scene_loader.h)
 
     int frame_count() const;  // round(fps * seconds)
 

@@ -12,7 +12,7 @@
 
 #include "cli/commands.h"
 #include "cli/job.h"
-#include "io/input_error.h"
+#include "text/input_error.h"
 #include "render/accuracy_sweep.h"
 
 namespace fh {

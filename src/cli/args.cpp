@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "io/input_error.h"
+#include "text/input_error.h"
 
 namespace fh {
 

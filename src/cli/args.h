@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "cli/flags.h"
-#include "io/closest_match.h"
-#include "io/parse_int.h"
+#include "text/closest_match.h"
+#include "text/parse_int.h"
 
 namespace fh {
 

@@ -6,9 +6,9 @@
 #include "anim/movie.h"
 #include "cli/commands.h"
 #include "cli/args.h"
-#include "io/input_error.h"
-#include "io/movie_loader.h"
-#include "io/scene_loader.h"
+#include "text/input_error.h"
+#include "yaml/movie_loader.h"
+#include "yaml/scene_loader.h"
 #include "pipeline/frame_files.h"
 
 namespace fh {

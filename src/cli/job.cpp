@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "io/input_error.h"
+#include "text/input_error.h"
 
 namespace fh {
 

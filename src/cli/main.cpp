@@ -9,7 +9,7 @@
 #include "cli/commands.h"
 #include "cli/flags.h"
 #include "core/simd.h"
-#include "io/input_error.h"
+#include "text/input_error.h"
 
 namespace fh {
 

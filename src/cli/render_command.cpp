@@ -8,9 +8,9 @@
 #include "cli/human.h"
 #include "cli/job.h"
 #include "cli/stats_output.h"
-#include "io/atomic_file.h"
-#include "io/image_writer.h"
-#include "io/input_error.h"
+#include "files/atomic_file.h"
+#include "images/image_writer.h"
+#include "text/input_error.h"
 #include "pipeline/frame_pipeline.h"
 
 namespace fh {

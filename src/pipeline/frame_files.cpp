@@ -6,9 +6,9 @@
 #include <sstream>
 #include <vector>
 
-#include "io/atomic_file.h"
-#include "io/input_error.h"
-#include "io/png_writer.h"
+#include "files/atomic_file.h"
+#include "text/input_error.h"
+#include "images/png_writer.h"
 
 namespace fh {
 

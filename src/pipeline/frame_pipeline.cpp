@@ -7,10 +7,10 @@
 #include <shared_mutex>
 
 #include "anim/frame_selection.h"
-#include "io/atomic_file.h"
-#include "io/input_error.h"
-#include "io/image_writer.h"
-#include "io/png_writer.h"
+#include "files/atomic_file.h"
+#include "text/input_error.h"
+#include "images/image_writer.h"
+#include "images/png_writer.h"
 #include "pipeline/interrupt.h"
 #include "render/prepared_scene.h"
 

@@ -16,7 +16,7 @@
 #include "anim/movie.h"
 #include "pipeline/frame_files.h"
 #include "pipeline/job.h"
-#include "io/raw_video_writer.h"
+#include "video/raw_video_writer.h"
 #include "render/render.h"
 
 namespace fh {
@@ -70,7 +70,7 @@ FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, 
                             FramesObserver& observer);
 
 // The job's frame rendered on `threads` workers (0: one per core) and
-// written to `path` in the format its extension names (io/image_writer.h;
+// written to `path` in the format its extension names (images/image_writer.h;
 // "-": PNG to standard output), whole or not at all. The place is checked before
 // rendering (InputError). SIGINT/SIGTERM during the render ends the process
 // at once with 128 + signal and nothing written; during the write, the

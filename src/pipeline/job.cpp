@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/closest_match.h"
-#include "io/input_error.h"
-#include "io/movie_loader.h"
-#include "io/parse_int.h"
-#include "io/scene_loader.h"
+#include "text/closest_match.h"
+#include "text/input_error.h"
+#include "yaml/movie_loader.h"
+#include "text/parse_int.h"
+#include "yaml/scene_loader.h"
 
 namespace fh {
 

@@ -15,7 +15,7 @@
 #include <string>
 
 #include "anim/movie.h"
-#include "io/png_writer.h"
+#include "images/png_writer.h"
 #include "render/render.h"
 #include "view/background_renderer.h"
 #include "view/view_state.h"

@@ -10,8 +10,8 @@
 
 #include "anim/movie.h"
 #include "cli/run_command.h"
-#include "io/input_error.h"
-#include "io/movie_loader.h"
+#include "text/input_error.h"
+#include "yaml/movie_loader.h"
 #include "pipeline/job.h"
 #include "render/prepared_scene.h"
 #include "test_util.h"

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/small_movie.h"
-#include "io/yuv420.h"
+#include "video/yuv420.h"
 #include "render/image_compare.h"
 #include "support/png_read.h"
 

@@ -9,7 +9,7 @@
 #include "cli/args.h"
 #include "cli/flags.h"
 #include "cli/run_command.h"
-#include "io/input_error.h"
+#include "text/input_error.h"
 
 namespace fh::test {
 namespace {

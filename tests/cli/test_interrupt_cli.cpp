@@ -9,8 +9,8 @@
 #include <regex>
 
 #include "cli/run_command.h"
-#include "io/atomic_file.h"
-#include "io/png_writer.h"
+#include "files/atomic_file.h"
+#include "images/png_writer.h"
 #include "support/png_read.h"
 
 namespace fh::test {

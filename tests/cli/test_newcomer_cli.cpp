@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cli/small_movie.h"
-#include "io/png_writer.h"
+#include "images/png_writer.h"
 
 namespace fh::test {
 namespace {

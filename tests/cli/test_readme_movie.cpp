@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli/run_command.h"
-#include "io/png_writer.h"
+#include "images/png_writer.h"
 
 namespace fh::test {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "io/scene_loader.h"
+#include "yaml/scene_loader.h"
 #include "render/adaptive.h"
 #include "render/packet_intersect.h"
 #include "render/image_compare.h"

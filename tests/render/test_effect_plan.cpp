@@ -2,7 +2,7 @@
 // byte, and each of the report's figures gets the plan SPEC section 6 gives it.
 #include <gtest/gtest.h>
 
-#include "io/scene_loader.h"
+#include "yaml/scene_loader.h"
 #include "render/render.h"
 
 namespace fh {

@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-#include "io/scene_loader.h"
+#include "yaml/scene_loader.h"
 #include "render/prepared_scene.h"
 
 namespace fh {

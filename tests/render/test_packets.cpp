@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "io/scene_loader.h"
+#include "yaml/scene_loader.h"
 #include "render/render.h"
 #include "render/sampler.h"
 #include "render/shading.h"

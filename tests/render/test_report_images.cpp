@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "io/scene_loader.h"
+#include "yaml/scene_loader.h"
 #include "render/render.h"
 
 namespace fh {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "render/background.h"
-#include "io/scene_loader.h"
+#include "yaml/scene_loader.h"
 #include "render/shading.h"
 
 namespace fh {

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "io/input_error.h"
-#include "io/scene_loader.h"
+#include "text/input_error.h"
+#include "yaml/scene_loader.h"
 #include "robust_util.h"
 #include "scene/camera.h"
 #include "test_util.h"

@@ -21,7 +21,7 @@
 
 #include <cmath>
 
-#include "io/scene_loader.h"
+#include "yaml/scene_loader.h"
 #include "robust_util.h"
 
 namespace fh {

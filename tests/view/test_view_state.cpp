@@ -3,8 +3,8 @@
 // the title. The window itself is tested by tests/view/test_view.sh.
 #include <gtest/gtest.h>
 
-#include "io/movie_loader.h"
-#include "io/scene_loader.h"
+#include "yaml/movie_loader.h"
+#include "yaml/scene_loader.h"
 #include "view/view_state.h"
 
 namespace fh::view {

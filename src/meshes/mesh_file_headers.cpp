@@ -1,0 +1,171 @@
+#include "meshes/mesh_file_headers.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include "text/input_error.h"
+#include "meshes/mesh_text.h"
+
+namespace fh {
+
+namespace {
+
+using mesh_text::contains;
+using mesh_text::lowercase;
+using mesh_text::plural;
+using mesh_text::starts_with;
+
+// At most the first `max_bytes` of the file.
+std::string read_head(const std::string& path, std::size_t max_bytes) {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(max_bytes, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(max_bytes));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    return head;
+}
+
+std::uint64_t saturating_add(std::uint64_t a, std::uint64_t b) {
+    std::uint64_t r;
+    return __builtin_add_overflow(a, b, &r) ? std::numeric_limits<std::uint64_t>::max() : r;
+}
+
+std::uint64_t saturating_mul(std::uint64_t a, std::uint64_t b) {
+    std::uint64_t r;
+    return __builtin_mul_overflow(a, b, &r) ? std::numeric_limits<std::uint64_t>::max() : r;
+}
+
+bool parse_count(const std::string& word, std::uint64_t& value) {
+    const char* end = word.data() + word.size();
+    const auto [ptr, ec] = std::from_chars(word.data(), end, value);
+    return ec == std::errc() && ptr == end && !word.empty();
+}
+
+// Bytes of one binary PLY value of `type` (1 for a name assimp will reject).
+std::uint64_t ply_type_bytes(const std::string& type) {
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
+        return 4;
+    if (type == "double" || type == "float64") return 8;
+    return 1;
+}
+
+}  // namespace
+
+
+// The PLY header's element counts against the bytes after it. Returns
+// whether the data is binary. Leaves files that do not start with "ply" to
+// assimp, which says so.
+bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
+    const std::string head = read_head(path, std::size_t(1) << 20);
+    if (lowercase(head.substr(0, 3)) != "ply") return false;
+    std::size_t end = std::string::npos;
+    for (std::size_t at = head.find("end_header"); at != std::string::npos; at = head.find("end_header", at + 1)) {
+        const std::size_t after = at + 10;
+        if ((at == 0 || head[at - 1] == '\n') &&
+            (after == head.size() || std::isspace(static_cast<unsigned char>(head[after])))) {
+            end = at;
+            break;
+        }
+    }
+    if (end == std::string::npos)
+        throw InputError(path, "the PLY header has no end_header line (a truncated file?)");
+    const std::size_t newline = head.find('\n', end);
+    const std::uintmax_t data_start = newline == std::string::npos ? file_size : newline + 1;
+    const std::uint64_t data_bytes = file_size - std::min<std::uintmax_t>(data_start, file_size);
+
+    struct Element {
+        std::string name;
+        std::uint64_t count = 0;
+        std::uint64_t bytes = 0;  // at least, per instance
+    };
+    std::vector<Element> elements;
+    bool binary = false;
+    std::istringstream lines(head.substr(0, end));
+    for (std::string line; std::getline(lines, line);) {
+        std::istringstream words(line);
+        std::string word, name, count;
+        words >> word;
+        if (word == "format") {
+            words >> name;
+            binary = starts_with(name, "binary");
+        } else if (word == "element") {
+            words >> name >> count;
+            Element e{name, 0, 0};
+            if (!parse_count(count, e.count)) return binary;  // assimp's to report
+            elements.push_back(e);
+        } else if (word == "property" && !elements.empty()) {
+            words >> name;  // the type; for a list, the type of its length
+            if (name == "list") words >> name;
+            // ASCII: a value and a separator.
+            elements.back().bytes += binary ? ply_type_bytes(name) : 2;
+        }
+    }
+    std::uint64_t needed = 0;
+    std::string declared;
+    for (const Element& e : elements) {
+        needed = saturating_add(needed, saturating_mul(e.count, std::max<std::uint64_t>(e.bytes, 1)));
+        declared += (declared.empty() ? "element " : ", element ") + e.name + " " + std::to_string(e.count);
+    }
+    if (!binary && needed > 0) --needed;  // the last line's newline may be missing
+    if (needed > data_bytes)
+        throw InputError(path, "the PLY header declares " + declared + " (at least " + plural(needed, "byte", "bytes") +
+                                   " of data) but only " + plural(data_bytes, "byte follows", "bytes follow") +
+                                   " it: a truncated file?");
+    const bool crlf = newline != std::string::npos && newline > 0 && head[newline - 1] == '\r';
+    if (binary && !crlf && newline != std::string::npos && newline + 1 < head.size() && head[newline + 1] == '\n')
+        throw InputError(path,
+                         "binary PLY data starting with byte 0x0a: assimp takes it for the header's line end and "
+                         "misreads everything after it (assimp issue #5341)");
+    return binary;
+}
+
+// The OFF header's vertex and face counts against the file's size: a vertex
+// takes at least two bytes per coordinate ("0 "), a face two.
+void check_off_header(const std::string& path, std::uintmax_t file_size) {
+    const std::string head = read_head(path, std::size_t(1) << 16);
+    // The first tokens, without # comments, and where each ends.
+    std::vector<std::pair<std::string, std::size_t>> tokens;
+    for (std::size_t i = 0; i < head.size() && tokens.size() < 5;) {
+        const auto c = static_cast<unsigned char>(head[i]);
+        if (c == '#') {
+            while (i < head.size() && head[i] != '\n') ++i;
+        } else if (std::isspace(c)) {
+            ++i;
+        } else {
+            const std::size_t start = i;
+            while (i < head.size() && !std::isspace(static_cast<unsigned char>(head[i])) && head[i] != '#') ++i;
+            tokens.emplace_back(head.substr(start, i - start), i);
+        }
+    }
+    std::size_t next = 0;
+    std::uint64_t dimensions = 3;
+    if (!tokens.empty() && tokens[0].first.size() >= 3 &&
+        tokens[0].first.compare(tokens[0].first.size() - 3, 3, "OFF") == 0) {
+        ++next;
+        if (contains(tokens[0].first, "n")) {  // nOFF: the dimension comes first
+            if (next >= tokens.size() || !parse_count(tokens[next].first, dimensions)) return;
+            ++next;
+        }
+    }
+    std::uint64_t vertices = 0, faces = 0;
+    if (next + 1 >= tokens.size() || !parse_count(tokens[next].first, vertices) ||
+        !parse_count(tokens[next + 1].first, faces))
+        return;  // assimp's to report
+    const std::uint64_t rest = file_size - std::min<std::uintmax_t>(tokens[next + 1].second, file_size);
+    std::uint64_t needed = saturating_add(saturating_mul(vertices, 2 * std::max<std::uint64_t>(dimensions, 1)),
+                                          saturating_mul(faces, 2));
+    if (needed > 0) --needed;  // the last line's newline may be missing
+    if (needed > rest)
+        throw InputError(path, "the OFF header declares " + plural(vertices, "vertex", "vertices") + " and " +
+                                   plural(faces, "face", "faces") + " (at least " + plural(needed, "byte", "bytes") +
+                                   ") but only " + plural(rest, "byte follows", "bytes follow") +
+                                   " the counts: a truncated file?");
+}
+
+}  // namespace fh

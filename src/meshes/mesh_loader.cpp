@@ -1,0 +1,517 @@
+// Mesh files through assimp (Debian 12: libassimp 5.2.5), made strict. assimp
+// reads; this file checks what it read and what it only logged, and works
+// around what 5.2.5 gets wrong on bad input, each seen on this machine:
+//   - it reports some problems only to its log, which is off by default: an
+//     OFF face index out of range (clamped to the last vertex), a file that
+//     ends early (OFF, ASCII STL), a PLY value it cannot parse (read as 0). We
+//     install a logger that prints nothing and collects them per thread; any
+//     message not known to be harmless fails the load.
+//   - an OFF index "-1" it reads as 0 and reports nowhere: the face comes out
+//     degenerate, so an OFF file with degenerate faces is read again for it.
+//   - it names no line for what it read wrong (a NaN, a clamped index): the
+//     file is read again for that vertex or face (meshes/mesh_records.h).
+//   - JoinIdenticalVertices takes any vertex with a NaN coordinate for equal to
+//     another vertex it shares a hash bucket with, so the NaN can vanish:
+//     coordinates are checked before joining (the file is read, checked, then
+//     post-processed).
+//   - its PLY reader loops forever on a header without end_header, and it and
+//     the OFF reader allocate whatever count the header declares (400 million
+//     vertices in a 200-byte PLY: 4.7 GB): their headers' counts are checked
+//     against the file's size first (upstream has since fixed the loop and
+//     the OFF allocation).
+//   - a PLY face with no indices (a file cut short after its header) makes
+//     Triangulate abort the process on an assertion (assimp issue #5684): such
+//     faces are refused before triangulating.
+//   - binary PLY data whose first byte is 0x0a loses that byte (assimp issue
+//     #5341): refused with that reason rather than misread.
+#include "meshes/mesh_loader.h"
+
+#include <assimp/DefaultLogger.hpp>
+#include <assimp/Importer.hpp>
+#include <assimp/Logger.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <mutex>
+#include <new>
+#include <sstream>
+#include <unordered_map>
+
+#include "text/input_error.h"
+#include "meshes/mesh_file_headers.h"
+#include "meshes/mesh_records.h"
+#include "meshes/mesh_text.h"
+
+namespace fh {
+
+namespace {
+
+namespace fs = std::filesystem;
+using mesh_text::contains;
+using mesh_text::lowercase;
+using mesh_text::plural;
+using mesh_text::starts_with;
+
+using Format = MeshFormat;
+
+
+
+// The file must exist, be a regular file and be readable; returns its size.
+std::uintmax_t check_file(const std::string& path) {
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (status.type() == fs::file_type::not_found) throw InputError(path, "cannot open mesh file: no such file");
+    if (ec) throw InputError(path, "cannot open mesh file: " + lowercase(ec.message()));
+    if (status.type() == fs::file_type::directory) throw InputError(path, "cannot open mesh file: it is a folder");
+    if (status.type() != fs::file_type::regular) throw InputError(path, "cannot open mesh file: not a regular file");
+    errno = 0;
+    if (!std::ifstream(path, std::ios::binary))
+        throw InputError(path, "cannot open mesh file: " + lowercase(errno ? std::strerror(errno) : "cannot read"));
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec) throw InputError(path, "cannot open mesh file: " + lowercase(ec.message()));
+    return size;
+}
+
+Format format_of(const std::string& path) {
+    const std::string ext = fs::path(path).extension().string();
+    const std::string lower = lowercase(ext);
+    if (lower == ".obj") return Format::obj;
+    if (lower == ".ply") return Format::ply;
+    if (lower == ".stl") return Format::stl;
+    if (lower == ".off") return Format::off;
+    throw InputError(path, "unknown mesh format '" + ext + "' (supported: .obj, .ply, .stl, .off)");
+}
+
+// ---- assimp's log -----------------------------------------------------------
+
+// The messages of the load running on this thread, or null.
+thread_local std::vector<std::string>* t_messages = nullptr;
+
+// Prints nothing; keeps warnings and errors for the load on this thread.
+class CollectingLogger final : public Assimp::Logger {
+public:
+    CollectingLogger() : Assimp::Logger(Assimp::Logger::NORMAL) {}
+    bool attachStream(Assimp::LogStream*, unsigned int) override { return false; }
+    bool detachStream(Assimp::LogStream*, unsigned int) override { return false; }
+
+private:
+    void OnDebug(const char*) override {}
+    void OnVerboseDebug(const char*) override {}
+    void OnInfo(const char*) override {}
+    void OnWarn(const char* message) override { keep(message); }
+    void OnError(const char* message) override { keep(message); }
+    static void keep(const char* message) noexcept {
+        if (t_messages == nullptr) return;
+        try {
+            t_messages->emplace_back(message);
+        } catch (...) {
+            // Out of memory: the load fails on its own.
+        }
+    }
+};
+
+// Collects assimp's messages while it lives. The logger is assimp's global
+// one, set once and kept (assimp owns it); loads on other threads have their
+// own lists.
+class MessageCollector {
+public:
+    MessageCollector() {
+        static std::once_flag installed;
+        std::call_once(installed, [] { Assimp::DefaultLogger::set(new CollectingLogger); });
+        t_messages = &messages_;
+    }
+    ~MessageCollector() { t_messages = nullptr; }
+    MessageCollector(const MessageCollector&) = delete;
+    MessageCollector& operator=(const MessageCollector&) = delete;
+    const std::vector<std::string>& messages() const { return messages_; }
+
+private:
+    std::vector<std::string> messages_;
+};
+
+// assimp 5.2.5's messages, while reading these four formats, that leave the
+// geometry as the file has it: materials (ours come from the scene file),
+// the validator's warnings (unreferenced vertices, texture coordinates), an
+// OBJ `f` line with no vertices (skipped), a polygon that is not simple
+// (triangulated as a fan instead). Any other message fails the load.
+bool harmless(const std::string& m) {
+    static const char* const prefixes[] = {
+        "Validation warning:",
+        "OBJ: failed to locate material",
+        "OBJ: no name for material library specified",
+        "OBJ: Unable to locate material file",
+        "OBJ: Unable to locate fallback material file",
+        "OBJ: Unsupported material requested",
+        "OBJ: unexpected illumination model",
+        "OBJ/MTL:",
+        "OBJ: No object detected to attach a new mesh instance",
+        "Obj: Ignoring empty face",
+        "Failed to triangulate polygon (no ear found)",
+    };
+    return std::any_of(std::begin(prefixes), std::end(prefixes), [&](const char* p) { return starts_with(m, p); });
+}
+
+// ---- messages ----------------------------------------------------------------
+
+std::string number(float v) {
+    char buf[32];
+    const auto result = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, result.ptr);
+}
+
+std::string triple(const aiVector3D& v) { return "(" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ")"; }
+
+[[noreturn]] void fail(const std::string& path, Format format, const std::string& assimp_message, bool binary_ply) {
+    detail::MeshMessage m = detail::clean_assimp_message(assimp_message, path);
+    if (binary_ply && contains(m.text, "out of range")) m.text += " (truncated or corrupt binary data?)";
+    if (m.line == 0 && contains(m.text, "vertex index out of range")) {
+        const TextPosition at = bad_face_index_position(path, format);
+        throw InputError(path, at.line, at.column, m.text);
+    }
+    throw InputError(path, m.line, 0, m.text);
+}
+
+// A failed read, or one assimp logged a problem with: InputError.
+void check_result(const std::string& path, Format format, const MessageCollector& log, const aiScene* scene,
+                  const Assimp::Importer& importer, bool binary_ply) {
+    for (const std::string& m : log.messages())
+        if (!harmless(m)) fail(path, format, m, binary_ply);
+    if (scene == nullptr) fail(path, format, importer.GetErrorString(), binary_ply);
+}
+
+bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// How a message names vertex `v` of a mesh as read, before joining: by its
+// index where the file numbers its vertices (PLY, OFF: from 0), by its facet
+// (STL, from 0, `first_facet` being the facets of the solids before), else
+// (OBJ: assimp gives a vertex per face corner) by its position.
+std::string vertex_name(Format format, const aiMesh& mesh, unsigned v, std::size_t first_facet) {
+    switch (format) {
+        case Format::ply:
+        case Format::off: return "vertex " + std::to_string(v);
+        case Format::stl: return "a vertex of facet " + std::to_string(first_facet + v / 3);
+        case Format::obj: break;
+    }
+    return "the vertex at " + triple(mesh.mVertices[v]);
+}
+
+std::array<float, 3> floats(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+
+// Where vertex `v` of a mesh as read is in a text file (vertex_name's vertex),
+// its first non-finite coordinate -- or with `normals`, its first non-finite
+// number (OBJ: in the `vn` record of that normal).
+TextPosition nonfinite_position(const std::string& path, Format format, const aiMesh& mesh, unsigned v,
+                                std::size_t first_facet, bool normals) {
+    if (format == Format::obj) {
+        const std::array<float, 3> p = floats(normals ? mesh.mNormals[v] : mesh.mVertices[v]);
+        return nonfinite_vertex_position(path, format, normals, -1, &p);
+    }
+    const long long record = format == Format::stl ? 3 * static_cast<long long>(first_facet) + v : v;
+    return nonfinite_vertex_position(path, format, normals, record);
+}
+
+// The file as read, before post-processing: faces with vertices, finite
+// coordinates and normals, not too many triangles. Returns whether every
+// vertex a face uses has a normal (a non-zero one: assimp gives the corners of
+// an OBJ face that names no normals zero ones when other faces name some).
+bool check_read(const std::string& path, Format format, const aiScene& scene, std::size_t max_triangles) {
+    std::uint64_t triangles = 0;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& mesh = *scene.mMeshes[m];
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            const unsigned n = mesh.mFaces[f].mNumIndices;
+            if (n == 0) throw InputError(path, "face " + std::to_string(f) + " has no vertices");
+            if (n >= 3) triangles += n - 2;
+        }
+    }
+    if (triangles > max_triangles)
+        throw InputError(path, std::to_string(triangles) + " triangles is more than the limit of " +
+                                   std::to_string(max_triangles));
+    std::size_t first_facet = 0;
+    bool all_normals = format != Format::stl;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& mesh = *scene.mMeshes[m];
+        all_normals = all_normals && mesh.HasNormals();
+        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+            if (finite(mesh.mVertices[v])) continue;
+            std::string what = vertex_name(format, mesh, v, first_facet) + " has a non-finite coordinate";
+            if (format != Format::obj) what += ": " + triple(mesh.mVertices[v]);
+            const TextPosition at = nonfinite_position(path, format, mesh, v, first_facet, false);
+            throw InputError(path, at.line, at.column, what);
+        }
+        if (mesh.HasNormals() && format != Format::stl) {
+            for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+                const aiFace& face = mesh.mFaces[f];
+                for (unsigned k = 0; k < face.mNumIndices; ++k) {
+                    const aiVector3D& n = mesh.mNormals[face.mIndices[k]];
+                    if (!finite(n)) {
+                        std::string what = vertex_name(format, mesh, face.mIndices[k], first_facet);
+                        const TextPosition at =
+                            nonfinite_position(path, format, mesh, face.mIndices[k], first_facet, true);
+                        throw InputError(path, at.line, at.column,
+                                         what.append(" has a non-finite normal: ").append(triple(n)));
+                    }
+                    if (n.x == 0 && n.y == 0 && n.z == 0) all_normals = false;
+                }
+            }
+        }
+        first_facet += mesh.mNumFaces;
+    }
+    return all_normals;
+}
+
+// A vertex as joined across the file's meshes: its position, and its normal
+// when normals are kept.
+struct VertexKey {
+    std::array<double, 6> v;
+    bool operator==(const VertexKey& o) const { return v == o.v; }
+};
+
+struct VertexKeyHash {
+    std::size_t operator()(const VertexKey& k) const {
+        std::size_t h = 0;
+        for (double x : k.v) h = h * 1000003u ^ std::hash<double>()(x);
+        return h;
+    }
+};
+
+// The post-processed scene as one mesh: vertices joined across meshes (assimp
+// joins within each), triangles of zero area dropped, unused vertices gone;
+// normals kept when `all_normals` (check_read).
+MeshData collect(const std::string& path, const aiScene& scene, bool all_normals) {
+    bool keep_normals = all_normals && scene.mNumMeshes > 0;
+    std::size_t vertex_count = 0, face_count = 0;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        keep_normals = keep_normals && scene.mMeshes[m]->HasNormals();
+        vertex_count += scene.mMeshes[m]->mNumVertices;
+        face_count += scene.mMeshes[m]->mNumFaces;
+    }
+    // One mesh: JoinIdenticalVertices has joined it already (what it compares
+    // beyond the position and normal, RemoveComponent took away).
+    const bool join = scene.mNumMeshes > 1;
+    std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> ids;
+    if (join) ids.reserve(vertex_count);
+    std::vector<dvec3> positions, normals;
+    positions.reserve(vertex_count);
+    if (keep_normals) normals.reserve(vertex_count);
+    MeshData out;
+    out.triangles.reserve(face_count);
+    std::size_t points_and_lines = 0;
+    std::vector<std::uint32_t> id;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& mesh = *scene.mMeshes[m];
+        id.assign(mesh.mNumVertices, 0);
+        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+            const aiVector3D& p = mesh.mVertices[v];
+            const aiVector3D n = keep_normals ? mesh.mNormals[v] : aiVector3D(0, 0, 0);
+            if (positions.size() >= std::numeric_limits<std::uint32_t>::max())
+                throw InputError(path, "more than 2^32 - 1 vertices");
+            const auto next = static_cast<std::uint32_t>(positions.size());
+            if (join) {
+                // + 0.0: -0 and 0 are one value.
+                const VertexKey key{{p.x + 0.0, p.y + 0.0, p.z + 0.0, n.x + 0.0, n.y + 0.0, n.z + 0.0}};
+                const auto [it, added] = ids.try_emplace(key, next);
+                id[v] = it->second;
+                if (!added) continue;
+            } else {
+                id[v] = next;
+            }
+            positions.emplace_back(p.x, p.y, p.z);
+            if (keep_normals) normals.emplace_back(n.x, n.y, n.z);
+        }
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            const aiFace& face = mesh.mFaces[f];
+            if (face.mNumIndices != 3) {
+                ++points_and_lines;
+                continue;
+            }
+            const std::array<std::uint32_t, 3> t{id[face.mIndices[0]], id[face.mIndices[1]], id[face.mIndices[2]]};
+            const dvec3 c = glm::cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]);
+            if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || (c.x == 0 && c.y == 0 && c.z == 0)) {
+                ++out.degenerate_dropped;
+                continue;
+            }
+            out.triangles.push_back(t);
+        }
+    }
+    if (out.triangles.empty()) {
+        std::string what = "no triangles";
+        if (out.degenerate_dropped > 0)
+            what += ": " + plural(out.degenerate_dropped, "triangle", "triangles") + ", all of zero area";
+        else if (points_and_lines > 0)
+            what += ", only points and lines";
+        throw InputError(path, what);
+    }
+    // Vertices only points, lines or dropped triangles used.
+    constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> renumber(positions.size(), kUnused);
+    for (const auto& t : out.triangles)
+        for (std::uint32_t i : t) renumber[i] = 0;
+    std::uint32_t used = 0;
+    for (std::uint32_t& r : renumber)
+        if (r != kUnused) r = used++;
+    if (used == positions.size()) {
+        out.positions = std::move(positions);
+        out.normals = std::move(normals);
+        return out;
+    }
+    out.positions.resize(used);
+    if (keep_normals) out.normals.resize(used);
+    for (std::size_t i = 0; i < renumber.size(); ++i) {
+        if (renumber[i] == kUnused) continue;
+        out.positions[renumber[i]] = positions[i];
+        if (keep_normals) out.normals[renumber[i]] = normals[i];
+    }
+    for (auto& t : out.triangles)
+        for (std::uint32_t& i : t) i = renumber[i];
+    return out;
+}
+
+}  // namespace
+
+namespace detail {
+
+MeshMessage clean_assimp_message(const std::string& message, const std::string& path) {
+    // One line, single spaces.
+    std::string s;
+    for (char c : message) {
+        const bool space = static_cast<unsigned char>(c) < 0x20 || c == ' ' || c == 0x7f;
+        if (!space)
+            s += c;
+        else if (!s.empty() && s.back() != ' ')
+            s += ' ';
+    }
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    // The error names the file already.
+    if (!path.empty()) {
+        for (const std::string& p : {" for " + path, " \"" + path + "\"", " " + path}) {
+            for (std::size_t at = s.find(p); at != std::string::npos; at = s.find(p)) s.erase(at, p.size());
+        }
+    }
+    static const char* const prefixes[] = {"Validation failed: ", "std::exception: ", "Invalid .ply file: ",
+                                           "OBJ: ", "Obj: ", "OFF: ", "STL: ", "PLY: "};
+    for (bool stripped = true; stripped;) {
+        stripped = false;
+        for (const char* p : prefixes) {
+            if (starts_with(s, p)) {
+                s.erase(0, std::strlen(p));
+                stripped = true;
+            }
+        }
+    }
+    while (!s.empty() && (s.back() == '.' || s.back() == ' ')) s.pop_back();
+
+    // What the messages mean, said in our words where assimp's mislead.
+    if (starts_with(s, "aiMesh::mFaces[")) {
+        const std::size_t close = s.find(']');
+        const std::string face = s.substr(15, close == std::string::npos ? 0 : close - 15);
+        if (contains(s, "is out of range"))
+            s = "face " + face + " has a vertex index out of range";
+        else if (contains(s, "is a POINT"))  // an OBJ `f` line of one vertex
+            s = "face " + face + " has only one vertex";
+        else if (contains(s, "is a LINE"))
+            s = "face " + face + " has only two vertices";
+        else if (contains(s, "mIndices is nullptr") || contains(s, "mNumIndices is 0"))
+            s = "face " + face + " has no vertices";
+    } else if (s == "vertex index out of range" || s == "Vertex index is out of range") {
+        s = "a face has a vertex index out of range";
+    } else if (s == "The number of verts in the header is incorrect") {
+        s = "fewer vertices than the header declares (a truncated file?)";
+    } else if (s == "The number of faces in the header is incorrect") {
+        s = "fewer faces than the header declares (a truncated file?)";
+    } else if (s == "Faces with zero indices aren't allowed") {
+        s = "a face with no vertices, or with more than 9 (the most assimp's OFF reader takes)";
+    } else if (s == "unexpected EOF. 'endsolid' keyword was expected") {
+        s = "the file ends before 'endsolid' (a truncated file?)";
+    } else if (starts_with(s, "Unable to parse property instance") ||
+               starts_with(s, "Unable to parse binary property instance")) {
+        s = "a value in the data cannot be read (a truncated or corrupt file?)";
+    } else if (starts_with(s, "Failed to determine STL storage representation")) {
+        s += ": neither ASCII STL (starting 'solid') nor binary STL of 84 + 50 bytes per triangle (a truncated file?)";
+    } else if (contains(s, "contains no faces") || contains(s, "contains no vertices") ||
+               contains(s, "mNumMeshes is 0") || contains(s, "There are no valid") ||
+               contains(s, "There are no facets defined") || s == "no vertices") {
+        s = "no triangles";
+    }
+    if (s.empty()) s = "assimp cannot read the file (no reason given)";
+    // "Failed to ..." but not "OBJ-file ...".
+    if (s.size() > 1 && std::isupper(static_cast<unsigned char>(s[0])) &&
+        std::islower(static_cast<unsigned char>(s[1])))
+        s[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(s[0])));
+
+    MeshMessage out;
+    out.text = s;
+    // "line N", as a word.
+    for (std::size_t at = s.find("line "); at != std::string::npos; at = s.find("line ", at + 1)) {
+        if (at > 0 && std::isalnum(static_cast<unsigned char>(s[at - 1]))) continue;
+        int line = 0;
+        const char* begin = s.data() + at + 5;
+        const auto [ptr, ec] = std::from_chars(begin, s.data() + s.size(), line);
+        if (ec == std::errc() && ptr != begin && line > 0) {
+            out.line = line;
+            break;
+        }
+    }
+    return out;
+}
+
+}  // namespace detail
+
+MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
+    const std::uintmax_t size = check_file(path);
+    const Format format = format_of(path);
+    bool binary_ply = false;
+    if (format == Format::ply) binary_ply = check_ply_header(path, size);
+    if (format == Format::off) check_off_header(path, size);
+    try {
+        MessageCollector log;
+        Assimp::Importer importer;
+        // Read and validated only, so coordinates are checked before
+        // JoinIdenticalVertices can merge a NaN away.
+        const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+        check_result(path, format, log, scene, importer, binary_ply);
+        const bool all_normals = check_read(path, format, *scene, max_triangles);
+        // Vertices that differ only in what we do not keep are one vertex.
+        // STL's normals are its facets', not its vertices'.
+        int drop = aiComponent_COLORS | aiComponent_TEXCOORDS | aiComponent_TANGENTS_AND_BITANGENTS;
+        if (format == Format::stl) drop |= aiComponent_NORMALS;
+        importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, drop);
+        scene = importer.ApplyPostProcessing(aiProcess_RemoveComponent | aiProcess_Triangulate |
+                                             aiProcess_JoinIdenticalVertices);
+        check_result(path, format, log, scene, importer, binary_ply);
+        // assimp reads an OFF index "-1" as 0, silently: the face comes out
+        // degenerate and is dropped. So where one was, the faces are read again.
+        auto check_off_indices = [&] {
+            if (format != Format::off) return;
+            const TextPosition at = bad_face_index_position(path, format);
+            if (at.line > 0) throw InputError(path, at.line, at.column, "a face has a vertex index out of range");
+        };
+        MeshData mesh;
+        try {
+            mesh = collect(path, *scene, all_normals);
+        } catch (const InputError&) {
+            check_off_indices();  // "no triangles": all of them dropped
+            throw;
+        }
+        if (mesh.degenerate_dropped > 0) check_off_indices();
+        return mesh;
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw InputError(path, "out of memory reading the mesh");
+    } catch (const std::exception& e) {
+        fail(path, format, e.what(), binary_ply);
+    }
+}
+
+}  // namespace fh

@@ -1,0 +1,99 @@
+// Scene and movie files read as text, checked before any parser sees them: regular files of bounded
+// size, UTF-8 without control bytes, so bad input is refused at its byte, not misread.
+#include "text/text_input.h"
+
+#include <cerrno>
+#include <cctype>
+#include <cstdio>
+#include <cstring>
+
+#include <sys/stat.h>
+
+#include "text/input_error.h"
+
+namespace fh {
+
+namespace {
+
+std::string lowercase_first(std::string s) {
+    if (!s.empty()) s[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(s[0])));
+    return s;
+}
+
+std::string hex_byte(unsigned char c) {
+    static const char hex[] = "0123456789abcdef";
+    return std::string("0x") + hex[c >> 4] + hex[c & 15];
+}
+
+}  // namespace
+
+std::size_t utf8_length(const std::string& text, std::size_t i) {
+    const auto byte = [&](std::size_t k) { return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u; };
+    const unsigned c = byte(i);
+    const auto cont = [&](std::size_t k, unsigned lo = 0x80, unsigned hi = 0xbf) {
+        return byte(k) >= lo && byte(k) <= hi;
+    };
+    if (c < 0x80) return 1;
+    if (c == 0xc2) return (cont(i + 1, 0xa0) || byte(i + 1) == 0x85) ? 2 : 0;
+    if (c >= 0xc3 && c <= 0xdf) return cont(i + 1) ? 2 : 0;
+    if (c == 0xe0) return cont(i + 1, 0xa0) && cont(i + 2) ? 3 : 0;
+    if (c == 0xed) return cont(i + 1, 0x80, 0x9f) && cont(i + 2) ? 3 : 0;
+    if (c >= 0xe1 && c <= 0xef) return cont(i + 1) && cont(i + 2) ? 3 : 0;
+    if (c == 0xf0) return cont(i + 1, 0x90) && cont(i + 2) && cont(i + 3) ? 4 : 0;
+    if (c >= 0xf1 && c <= 0xf3) return cont(i + 1) && cont(i + 2) && cont(i + 3) ? 4 : 0;
+    if (c == 0xf4) return cont(i + 1, 0x80, 0x8f) && cont(i + 2) && cont(i + 3) ? 4 : 0;
+    return 0;
+}
+
+void check_input_text(const std::string& file, const std::string& text) {
+    if (text.size() > kMaxInputBytes)
+        throw InputError(file, "file too large: " + std::to_string(text.size()) + " bytes (the limit is " +
+                                   std::to_string(kMaxInputBytes) + " bytes, 1 MiB)");
+    int line = 1, column = 1;
+    for (std::size_t i = 0; i < text.size();) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c == '\n') {
+            ++line;
+            column = 1;
+            ++i;
+            continue;
+        }
+        if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f)
+            throw InputError(file, line, column,
+                             "binary data, not text: control byte " + hex_byte(c) +
+                                 " (scene and movie files are UTF-8 text)");
+        const std::size_t length = utf8_length(text, i);
+        if (length == 0)
+            throw InputError(file, line, column,
+                             "not UTF-8 text: byte " + hex_byte(c) + " (scene and movie files are UTF-8 text)");
+        i += length;
+        ++column;
+    }
+}
+
+std::string read_input_file(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0)
+        throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(errno)));
+    // Opening a folder succeeds on Linux and then reads nothing; a device or a
+    // pipe may never end. Say why instead.
+    if (S_ISDIR(st.st_mode)) throw InputError(path, "cannot read file: is a directory");
+    if (!S_ISREG(st.st_mode)) throw InputError(path, "cannot read file: not a regular file");
+    if (static_cast<unsigned long long>(st.st_size) > kMaxInputBytes)
+        throw InputError(path, "file too large: " + std::to_string(st.st_size) + " bytes (the limit is " +
+                                   std::to_string(kMaxInputBytes) + " bytes, 1 MiB)");
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(errno)));
+    // At most one byte past the limit, should the file have grown since.
+    std::string text(kMaxInputBytes + 1, '\0');
+    const std::size_t n = std::fread(text.data(), 1, text.size(), f);
+    const bool failed = std::ferror(f) != 0;
+    const int read_errno = errno;
+    std::fclose(f);
+    if (failed) throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(read_errno)));
+    text.resize(n);
+    check_input_text(path, text);
+    return text;
+}
+
+}  // namespace fh

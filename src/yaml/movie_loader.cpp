@@ -1,0 +1,377 @@
+#include "yaml/movie_loader.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <unordered_set>
+
+#include "yaml/scene_loader.h"
+#include "yaml/map_reader.h"
+
+namespace fh {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// "undefined camera 'x'", with a hint when a known name is close.
+[[noreturn]] void fail_undefined(const YamlReader& r, const YAML::Node& node, const std::string& kind,
+                                 const std::string& name, const std::vector<std::string>& known) {
+    const std::string hint = closest_match(name, known);
+    r.fail(node, "undefined " + kind + " '" + name + "'" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+}
+
+std::string scene_path(const YamlReader& r, const MapReader& m) {
+    const YAML::Node node = m.value("scene");
+    const fs::path path = fs::path(r.file()).parent_path() / r.string(node, "scene");
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (!fs::exists(status)) r.fail(node, "scene file '" + path.string() + "' does not exist");
+    if (fs::is_directory(status)) r.fail(node, "scene file '" + path.string() + "' is a directory");
+    if (!fs::is_regular_file(status)) r.fail(node, "scene file '" + path.string() + "' is not a regular file");
+    if (fs::equivalent(path, r.file(), ec)) r.fail(node, "a movie cannot be its own scene");
+    // Loading a movie as a scene would only complain about an unknown key 'scene'.
+    if (is_movie_file(path.string())) r.fail(node, "scene file '" + path.string() + "' is a movie, not a scene");
+    return path.string();
+}
+
+Camera pick_camera(const YamlReader& r, const MapReader& m, const Scene& scene) {
+    if (!m.has("camera")) return scene.cameras.front();
+    const YAML::Node node = m.value("camera");
+    const std::string name = r.string(node, "camera");
+    if (const Camera* cam = scene.find_camera(name)) return *cam;
+    std::vector<std::string> known;
+    for (const Camera& c : scene.cameras) known.push_back(c.name);
+    fail_undefined(r, node, "camera", name, known);
+}
+
+std::vector<std::string> light_names(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const auto& l : scene.ambient_lights) names.push_back(l.name);
+    for (const auto& l : scene.directional_lights) names.push_back(l.name);
+    for (const auto& l : scene.spot_lights) names.push_back(l.name);
+    return names;
+}
+
+std::vector<std::string> read_light_list(const YamlReader& r, const YAML::Node& node, const Scene& scene) {
+    r.expect_list(node, "'lights'");
+    const std::vector<std::string> known = light_names(scene);
+    std::vector<std::string> names;
+    for (const YAML::Node& item : node) {
+        const std::string name = r.string(item, "lights");
+        if (std::find(known.begin(), known.end(), name) == known.end())
+            fail_undefined(r, item, "light", name, known);
+        names.push_back(name);
+    }
+    return names;
+}
+
+// fps * seconds rounded, checked here in double so a huge product cannot
+// overflow Movie::frame_count()'s int.
+void check_frame_count(const YamlReader& r, const MapReader& m, const Movie& movie) {
+    const double frames = std::round(movie.fps * movie.seconds);
+    if (frames >= 1 && frames <= kMaxMovieFrames) return;
+    const YAML::Node at = m.has("seconds") ? m.value("seconds") : m.has("fps") ? m.value("fps") : m.node();
+    if (frames < 1) r.fail(at, "fps * seconds gives no frames");
+    r.fail(at, "fps * seconds gives more than " + std::to_string(kMaxMovieFrames) + " frames");
+}
+
+// 301, 7.5, 0.333333: a number as people write it.
+std::string number_text(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
+
+std::string join(const std::vector<std::string>& words, size_t from, const char* sep = ".") {
+    std::string out;
+    for (size_t i = from; i < words.size(); ++i) out += (i > from ? sep : "") + words[i];
+    return out;
+}
+
+std::vector<std::string> split(const std::string& path) {
+    std::vector<std::string> words(1);
+    for (const char c : path) {
+        if (c == '.') words.emplace_back();
+        else words.back() += c;
+    }
+    return words;
+}
+
+// The property `rest` of a thing (`what`: "light 'spot'"), or one line
+// listing what it can animate.
+Target pick_property(const YamlReader& r, const YAML::Node& at, const std::string& path, const std::string& what,
+                     const std::string& rest, const std::vector<PropertyName>& properties) {
+    std::vector<std::string> names;
+    for (const PropertyName& p : properties) {
+        if (rest == p.name) {
+            Target t;
+            t.property = p.property;
+            t.kind = p.kind;
+            t.path = path;
+            return t;
+        }
+        names.push_back(p.name);
+    }
+    const std::string hint = closest_match(rest, names);
+    r.fail(at, "unknown property '" + rest + "' in '" + path + "': " + what + " can animate " + join(names, 0, ", ") +
+                   (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+}
+
+// The animated property a path in `animate:` names (anim/property.h).
+Target read_target(const YamlReader& r, const YAML::Node& at, const std::string& written, const Movie& movie) {
+    // The old keys mean the camera's.
+    const bool old = written == "view_point" || written == "look_at" || written == "up";
+    const std::string path = old ? "camera." + written : written;
+    const std::vector<std::string> words = split(path);
+    const Scene& scene = movie.scene;
+    if (words[0] == "camera")
+        return pick_property(r, at, path, "the camera", join(words, 1), camera_properties(movie.camera.projection));
+    const std::vector<std::string> kinds = {"camera", "lights", "surfaces", "materials"};
+    if (std::find(kinds.begin(), kinds.end(), words[0]) == kinds.end() || words.size() < 3) {
+        const std::string hint = closest_match(words[0], kinds);
+        r.fail(at, "unknown property path '" + written + "': a path is camera.PROPERTY, lights.NAME.PROPERTY, "
+                   "surfaces.NAME.PROPERTY or materials.NAME.PROPERTY" +
+                   (hint.empty() || hint == words[0] ? "" : " (did you mean '" + hint + "'?)"));
+    }
+    const std::string& name = words[1];
+    const std::string rest = join(words, 2);
+    if (words[0] == "lights") {
+        auto in = [&](const auto& lights, LightKind kind, const char* what) -> std::optional<Target> {
+            for (size_t i = 0; i < lights.size(); ++i) {
+                if (lights[i].name != name) continue;
+                Target t = pick_property(r, at, path, std::string(what) + " '" + name + "'", rest, light_properties(kind));
+                t.light = kind;
+                t.index = i;
+                return t;
+            }
+            return std::nullopt;
+        };
+        if (auto t = in(scene.ambient_lights, LightKind::ambient, "ambient light")) return *t;
+        if (auto t = in(scene.directional_lights, LightKind::directional, "directional light")) return *t;
+        if (auto t = in(scene.spot_lights, LightKind::spot, "spot light")) return *t;
+        fail_undefined(r, at, "light", name, light_names(scene));
+    }
+    if (words[0] == "materials") {
+        const auto& names = scene.material_names;
+        const auto it = std::find(names.begin(), names.end(), name);
+        if (it == names.end()) fail_undefined(r, at, "material", name, names);
+        Target t = pick_property(r, at, path, "material '" + name + "'", rest, material_properties());
+        t.index = size_t(it - names.begin());
+        return t;
+    }
+    std::vector<std::string> names;
+    for (size_t i = 0; i < scene.named_surfaces.size(); ++i) {
+        const NamedSurface& s = scene.named_surfaces[i];
+        names.push_back(s.name);
+        if (s.name != name) continue;
+        const char* kind[] = {"sphere", "plane", "triangle", "mesh"};
+        Target t = pick_property(r, at, path, std::string(kind[int(s.kind)]) + " '" + name + "'", rest,
+                                 surface_properties(s.kind));
+        t.index = i;
+        return t;
+    }
+    const std::string hint = closest_match(name, names);
+    r.fail(at, "no surface named '" + name + "' (a surface gets one with 'name:' in the scene)" +
+                   (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+}
+
+// One value of the target's kind.
+dvec3 read_value(const YamlReader& r, const YAML::Node& node, const Target& t) {
+    switch (t.kind) {
+    case ValueKind::point: return r.vec3(node, t.path);
+    case ValueKind::direction: return r.direction(node, t.path);
+    case ValueKind::color: return r.color(node, t.path);
+    case ValueKind::scale: return node.IsSequence() ? r.vec3(node, t.path) : dvec3(r.number(node, t.path));
+    case ValueKind::flag: return dvec3(r.boolean(node, t.path) ? 1 : 0);
+    default: return dvec3(r.number(node, t.path));
+    }
+}
+
+bool is_vector(const Target& t) {
+    return t.kind == ValueKind::point || t.kind == ValueKind::direction || t.kind == ValueKind::color;
+}
+
+Orbit read_orbit(const YamlReader& r, const YAML::Node& node) {
+    const MapReader m(r, node, "'orbit'", {"center", "sin", "cos", "turns"});
+    return {m.vec3("center"), m.vec3("sin"), m.vec3("cos"), m.number_or("turns", 1)};
+}
+
+// Keys at `frame:` or `time:` (seconds: frame = time * fps), in increasing
+// order, inside the movie: 0 <= frame <= frame count (the movie's end).
+Keyframes read_keyframes(const YamlReader& r, const MapReader& m, const Target& t, const Movie& movie) {
+    const YAML::Node list = m.value("keyframes");
+    r.expect_list(list, "'keyframes'");
+    if (list.size() == 0) r.fail(list, "'keyframes' must have at least one key");
+    Keyframes k;
+    const int n = movie.frame_count();
+    for (const YAML::Node& item : list) {
+        const MapReader key(r, item, "keyframe", {"frame", "time", "value"});
+        if (key.has("frame") == key.has("time"))
+            r.fail(item, "a keyframe needs 'frame' (a frame index) or 'time' (seconds), one of them");
+        const bool timed = key.has("time");
+        const YAML::Node at = key.value(timed ? "time" : "frame");
+        const double frame = timed ? key.number_at_least("time", 0) * movie.fps : key.integer("frame", 0, INT_MAX);
+        if (frame > n + 1e-9 * n)
+            r.fail(at, "keyframe at " + (timed ? "time " + number_text(frame / movie.fps) + " s (frame " : "frame ") +
+                           number_text(frame) + (timed ? ")" : "") + " is past the movie's end (frame " +
+                           std::to_string(n) + ", " + number_text(movie.seconds) + " s)");
+        if (!k.keys.empty() && frame == k.keys.back().frame)
+            r.fail(at, "two keyframes at frame " + number_text(frame));
+        if (!k.keys.empty() && frame < k.keys.back().frame)
+            r.fail(at, "keyframes must be in increasing order: this one is at frame " + number_text(frame) +
+                           ", the one before at frame " + number_text(k.keys.back().frame));
+        k.keys.push_back({frame, read_value(r, key.value("value"), t)});
+    }
+    k.interpolation = t.kind == ValueKind::flag ? Interpolation::step : Interpolation::linear;
+    if (m.has("interpolation")) {
+        const std::vector<std::string> names = {"step", "linear", "catmull_rom", "ease_in", "ease_out", "ease_in_out"};
+        const int i = r.choice(m.value("interpolation"), "interpolation", names);
+        if (t.kind == ValueKind::flag && i != 0) r.fail(m.value("interpolation"), "'" + t.path + "' only steps: use interpolation: step");
+        k.interpolation = Interpolation(i);
+    }
+    return k;
+}
+
+// A point that moves: fixed, an orbit or keyframes (a Toward's target).
+PointPath read_point_path(const YamlReader& r, const YAML::Node& node, const std::string& where, const Movie& movie) {
+    if (node.IsSequence()) return r.vec3(node, where);
+    const MapReader m(r, node, "'" + where + "'", {"orbit", "keyframes", "interpolation"});
+    if (m.has("orbit") == m.has("keyframes"))
+        r.fail(node, "'" + where + "' takes a point, or one of 'orbit' or 'keyframes'");
+    if (m.has("orbit")) return read_orbit(r, m.value("orbit"));
+    Target point;
+    point.kind = ValueKind::point;
+    point.path = where;
+    return read_keyframes(r, m, point, movie);
+}
+
+// What a Toward aims at: a point, a moving point, or a named thing.
+Toward read_toward(const YamlReader& r, const YAML::Node& node, const Movie& movie) {
+    if (!node.IsScalar()) return {read_point_path(r, node, "toward", movie), std::nullopt};
+    const std::vector<std::string> words = split(node.Scalar());
+    const Scene& scene = movie.scene;
+    if (words.size() == 2 && words[0] == "lights") {
+        for (size_t i = 0; i < scene.spot_lights.size(); ++i)
+            if (scene.spot_lights[i].name == words[1]) return {dvec3(0), Follow{true, i, node.Scalar()}};
+    }
+    if (words.size() == 2 && words[0] == "surfaces") {
+        if (const NamedSurface* s = scene.find_surface(words[1])) {
+            if (s->kind == SurfaceKind::plane) r.fail(node, "'toward' cannot follow a plane: it has no centre");
+            return {dvec3(0), Follow{false, size_t(s - scene.named_surfaces.data()), node.Scalar()}};
+        }
+    }
+    r.fail(node, "'toward' follows 'surfaces.NAME' (a named sphere, triangle or mesh) or 'lights.NAME' "
+                 "(a spot light); no such thing as '" + node.Scalar() + "'");
+}
+
+// One animated property: a plain value, or a map with exactly one of value,
+// orbit, toward or keyframes (with its interpolation).
+Path read_path(const YamlReader& r, const MapReader::Entry& entry, const Target& t, const Movie& movie) {
+    const std::string& property = entry.key;
+    if (entry.value.IsNull()) r.fail(entry.key_node, "missing value for '" + property + "'");
+    if (!entry.value.IsMap()) return read_value(r, entry.value, t);
+    const MapReader m(r, entry.value, "'" + property + "'", {"value", "orbit", "toward", "keyframes", "interpolation"});
+    const MapReader::Entry* kind = nullptr;
+    for (const MapReader::Entry& e : m.entries()) {
+        if (e.key == "interpolation") continue;
+        if (kind) r.fail(e.key_node, "'" + property + "' takes only one of 'value', 'orbit', 'toward' or 'keyframes'");
+        kind = &e;
+    }
+    if (!kind) r.fail(m.node(), "'" + property + "' needs one of 'value', 'orbit', 'toward' or 'keyframes'");
+    if (const MapReader::Entry* interp = m.find("interpolation"); interp && kind->key != "keyframes")
+        r.fail(interp->key_node, "'interpolation' only applies to 'keyframes'");
+    if (kind->key == "value") return read_value(r, m.value("value"), t);
+    if (kind->key == "keyframes") return read_keyframes(r, m, t, movie);
+    if (kind->key == "orbit") {
+        if (!is_vector(t)) r.fail(kind->key_node, "'orbit' moves a vector; '" + t.path + "' is not one");
+        return read_orbit(r, m.value("orbit"));
+    }
+    // Toward aims from a place: the camera's eye, a spot light's position.
+    const bool spot_direction = t.property == Property::light_direction && t.light == LightKind::spot;
+    if (t.property != Property::camera_look_at && !spot_direction)
+        r.fail(kind->key_node, "'toward' is only allowed for 'camera.look_at' and a spot light's 'direction'");
+    return read_toward(r, m.value("toward"), movie);
+}
+
+void read_animate(const YamlReader& r, const YAML::Node& node, Movie& movie) {
+    if (node.IsNull()) return;
+    const MapReader m(r, node, "'animate'", {});
+    for (const MapReader::Entry& e : m.entries()) {
+        const Target t = read_target(r, e.key_node, e.key, movie);
+        for (const Animation& a : movie.animations)
+            if (a.target.path == t.path)
+                r.fail(e.key_node, "'" + t.path + "' is animated twice");
+        auto is_angle = [](Property p) { return p == Property::transform_degrees || p == Property::transform_radians; };
+        for (const Animation& a : movie.animations)
+            if (is_angle(t.property) && is_angle(a.target.property) && a.target.index == t.index)
+                r.fail(e.key_node, "'" + t.path + "': animate the angle in degrees or in radians, not both");
+        const YAML::Mark mark = e.key_node.Mark();
+        movie.animations.push_back({t, read_path(r, e, t, movie), mark.line + 1, mark.column + 1});
+    }
+}
+
+YAML::Node block(const MapReader& m, const std::string& key) {
+    const MapReader::Entry* e = m.find(key);
+    return e ? e->value : YAML::Node();
+}
+
+}  // namespace
+
+namespace {
+
+// The movie in `text` (read from the file when it is null).
+Movie load_movie_text(const std::string* text, const std::string& path) {
+    try {
+        const YamlReader r(path);
+        const MapReader m(r, text ? r.parse_map(*text, "movie") : r.load_map("movie"), "movie",
+                          {"scene", "camera", "lights", "fps", "seconds", "width", "height", "animate", "render",
+                           "effects"});
+        Movie movie;
+        SceneFile scene_file = load_scene(scene_path(r, m));
+        movie.scene = std::move(scene_file.scene);
+        movie.settings = scene_file.settings;
+        movie.warnings = std::move(scene_file.warnings);
+        movie.camera = pick_camera(r, m, movie.scene);
+        if (m.has("lights")) keep_only_lights(movie.scene, read_light_list(r, m.value("lights"), movie.scene));
+        if (m.has("fps")) movie.fps = m.positive("fps");
+        if (m.has("seconds")) movie.seconds = m.positive("seconds");
+        check_frame_count(r, m, movie);
+        // A preview or a 4K version without a copy of the scene.
+        if (m.has("width")) movie.camera.width = m.integer("width", 1, Limits::max_image_side);
+        if (m.has("height")) movie.camera.height = m.integer("height", 1, Limits::max_image_side);
+        read_animate(r, block(m, "animate"), movie);
+        read_render_settings(r, block(m, "render"), movie.settings);
+        if (m.has("effects")) movie.settings.effects = read_effects(r, m.value("effects"));
+        return movie;
+    } catch (const YAML::Exception& e) {
+        throw to_input_error(path, e);
+    }
+}
+
+}  // namespace
+
+Movie load_movie(const std::string& path) { return load_movie_text(nullptr, path); }
+
+Movie load_movie_from_string(const std::string& text, const std::string& path) {
+    return load_movie_text(&text, path);
+}
+
+bool is_movie_file(const std::string& path) {
+    try {
+        // The same checked reading as loading: size, text, nesting.
+        const YamlReader r(path);
+        const YAML::Node root = r.load_map("movie");
+        for (auto it = root.begin(); it != root.end(); ++it) {
+            const YAML::Node key = it->first;
+            if (key.IsScalar() && key.Scalar() == "scene") return true;
+        }
+        return false;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+}  // namespace fh

@@ -1,0 +1,358 @@
+#include "yaml/scene_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "yaml/map_reader.h"
+#include "meshes/mesh_loader.h"
+
+namespace fh {
+
+namespace {
+
+using Keys = std::vector<std::string>;
+
+constexpr double kTwoPi = 6.283185307179586;
+
+// An optional block: absent or empty (null) gives a null node.
+YAML::Node block(const MapReader& map, const std::string& key) {
+    const MapReader::Entry* e = map.find(key);
+    return e ? e->value : YAML::Node();
+}
+
+Material<double> read_material(const YamlReader& r, const YAML::Node& node, const std::string& name) {
+    const MapReader m(r, node, "material '" + name + "'",
+                      {"color", "ambient_color", "diffuse_color", "specular_color", "ambient", "diffuse",
+                       "specular", "phong_exponent", "glazed", "reflectivity"});
+    // `color` is shared by the three terms; a per-term colour overrides it, and
+    // only when all three are given may `color` be left out.
+    const bool all_terms = m.has("ambient_color") && m.has("diffuse_color") && m.has("specular_color");
+    const dvec3 base = (all_terms && !m.has("color")) ? dvec3(0) : m.color("color");
+    Material<double> mat;
+    mat.ambient_color = m.has("ambient_color") ? m.color("ambient_color") : base;
+    mat.diffuse_color = m.has("diffuse_color") ? m.color("diffuse_color") : base;
+    mat.specular_color = m.has("specular_color") ? m.color("specular_color") : base;
+    mat.ambient = m.number_at_least("ambient", 0);
+    mat.diffuse = m.number_at_least("diffuse", 0);
+    mat.specular = m.number_at_least("specular", 0);
+    mat.phong_exponent = m.number_at_least("phong_exponent", 0);
+    mat.glazed = m.boolean_or("glazed", false);
+    mat.reflectivity = m.has("reflectivity") ? m.number_at_least("reflectivity", 0) : 0;
+    return mat;
+}
+
+void read_materials(const YamlReader& r, const YAML::Node& node, Scene& scene) {
+    if (node.IsNull()) return;
+    const MapReader names(r, node, "'materials'", {});
+    for (const MapReader::Entry& e : names.entries()) {
+        scene.material_names.push_back(e.key);
+        scene.materials.push_back(read_material(r, e.value, e.key));
+    }
+}
+
+int material_index(const MapReader& m, const Scene& scene) {
+    const YAML::Node node = m.value("material");
+    const std::string name = m.reader().string(node, "material");
+    const auto& names = scene.material_names;
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end()) {
+        const std::string hint = closest_match(name, names);
+        m.reader().fail(node, "undefined material '" + name + "'" +
+                                  (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+    }
+    return static_cast<int>(it - names.begin());
+}
+
+// The vertex normals stay in step with the triangles once a smooth mesh
+// has some: zeros (flat) for every other triangle.
+void add_triangles(Scene& scene, const PlacedMesh& placed) {
+    if (!placed.vertex_normals.empty() || !scene.vertex_normals.empty()) {
+        scene.vertex_normals.resize(scene.triangles.size());
+        if (placed.vertex_normals.empty()) scene.vertex_normals.resize(scene.triangles.size() + placed.triangles.size());
+        else scene.vertex_normals.insert(scene.vertex_normals.end(), placed.vertex_normals.begin(), placed.vertex_normals.end());
+    }
+    scene.triangles.insert(scene.triangles.end(), placed.triangles.begin(), placed.triangles.end());
+}
+
+// A triangle as a mesh of one, so that a movie can move it like a mesh.
+Mesh read_triangle(const MapReader& m, int material) {
+    const YAML::Node v = m.value("vertices");
+    const YamlReader& r = m.reader();
+    if (!v.IsSequence() || v.size() != 3) r.fail(v, "expected a list of 3 points for 'vertices'");
+    // A zero-area triangle is accepted: it has a zero normal and never hits.
+    Mesh mesh;
+    mesh.positions = {r.vec3(v[0], "vertices"), r.vec3(v[1], "vertices"), r.vec3(v[2], "vertices")};
+    mesh.triangles = {{0, 1, 2}};
+    mesh.material = material;
+    return mesh;
+}
+
+// A mesh's `transform` (scene/mesh.h): p -> translate + rotate(scale * p),
+// in that order (scale first, about the origin; then the rotation about
+// `axis` through the origin, right-handed, by `degrees` or `radians`; then
+// the move).
+Transform read_transform(const YamlReader& r, const YAML::Node& node) {
+    const MapReader m(r, node, "'transform'", {"scale", "rotate", "translate"});
+    Transform t;
+    if (m.has("translate")) t.translate = m.vec3("translate");
+    if (const MapReader::Entry* rot = m.find("rotate")) {
+        const MapReader q(r, rot->value, "'rotate'", {"axis", "degrees", "radians"});
+        if (q.has("degrees") == q.has("radians"))
+            r.fail(rot->value, "'rotate' needs an angle: 'degrees' or 'radians' (one of them)");
+        t.radians = q.has("degrees") ? glm::radians(q.number("degrees")) : q.number("radians");
+        t.axis = q.direction("axis");
+    }
+    if (const MapReader::Entry* sc = m.find("scale")) {
+        t.scale = sc->value.IsSequence() ? m.vec3("scale") : dvec3(m.positive("scale"));
+        if (!(t.scale.x > 0 && t.scale.y > 0 && t.scale.z > 0))
+            r.fail(sc->value, "'scale' must be greater than 0 (a number, or one per axis)");
+    }
+    return t;
+}
+
+// A mesh file (meshes/mesh_loader.h), its path relative to the scene file's
+// folder. The file's own errors name the mesh file. Triangles the transform
+// collapses to zero area are dropped (and counted) like the file's own.
+Mesh read_mesh(const MapReader& m, int material, const Transform& transform, Scene& scene, PlacedMesh& placed) {
+    const YamlReader& r = m.reader();
+    const YAML::Node file = m.value("file");
+    const std::filesystem::path path = std::filesystem::path(r.file()).parent_path() / r.string(file, "file");
+    MeshData data = load_mesh(path.string());
+    Mesh mesh{std::move(data.positions), std::move(data.normals), std::move(data.triangles), material,
+              m.boolean_or("smooth", false)};
+    placed = place(mesh, transform);
+    size_t kept = 0;
+    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+        if (placed.triangles[i].degenerate()) continue;
+        mesh.triangles[kept] = mesh.triangles[i];
+        placed.triangles[kept] = placed.triangles[i];
+        if (mesh.smooth) placed.vertex_normals[kept] = placed.vertex_normals[i];
+        ++kept;
+    }
+    scene.degenerate_mesh_triangles += data.degenerate_dropped + (mesh.triangles.size() - kept);
+    mesh.triangles.resize(kept);
+    placed.triangles.resize(kept);
+    if (mesh.smooth) placed.vertex_normals.resize(kept);
+    ++scene.meshes;
+    return mesh;
+}
+
+// The name of a surface: unique among the surfaces.
+std::string surface_name(const MapReader& m, const Scene& scene) {
+    if (!m.has("name")) return "";
+    const std::string name = m.reader().string(m.value("name"), "name");
+    if (name.empty()) m.reader().fail(m.value("name"), "a surface's 'name' must not be empty");
+    if (scene.find_surface(name)) m.reader().fail(m.value("name"), "a second surface named '" + name + "'");
+    return name;
+}
+
+void read_surface(const YamlReader& r, const YAML::Node& node, Scene& scene) {
+    // The type decides which keys are allowed, so it is read first.
+    const MapReader any(r, node, "surface", {});
+    const int type = r.choice(any.value("type"), "surface type", {"sphere", "plane", "triangle", "mesh"});
+    NamedSurface named;
+    if (type == 2 || type == 3) {
+        const MapReader m = type == 3
+            ? MapReader(r, node, "mesh", {"type", "name", "file", "material", "transform", "smooth"})
+            : MapReader(r, node, "triangle", {"type", "name", "vertices", "material"});
+        named.name = surface_name(m, scene);
+        named.kind = type == 3 ? SurfaceKind::mesh : SurfaceKind::triangle;
+        const int material = material_index(m, scene);
+        if (type == 3 && m.has("transform")) named.transform = read_transform(r, m.value("transform"));
+        PlacedMesh placed;
+        Mesh mesh = type == 3 ? read_mesh(m, material, named.transform, scene, placed) : read_triangle(m, material);
+        if (type == 2) placed = place(mesh, named.transform);
+        named.index = scene.triangles.size();
+        named.count = placed.triangles.size();
+        add_triangles(scene, placed);
+        named.mesh = std::make_shared<const Mesh>(std::move(mesh));
+    } else if (type == 0) {
+        const MapReader m(r, node, "sphere", {"type", "name", "center", "radius", "material"});
+        named.name = surface_name(m, scene);
+        const dvec3 center = m.vec3("center");
+        const double radius = m.positive("radius");
+        named.index = scene.spheres.size();
+        scene.spheres.push_back({center, radius, material_index(m, scene)});
+    } else {
+        const MapReader m(r, node, "plane", {"type", "name", "normal", "distance", "material"});
+        named.name = surface_name(m, scene);
+        named.kind = SurfaceKind::plane;
+        const dvec3 normal = m.direction("normal");
+        const double distance = m.number("distance");
+        // n.x = d and (n/s).x = d/s are the same plane: scale both alike.
+        const double scale = max_abs_component(normal);
+        const double length = glm::length(normal / scale);
+        named.index = scene.planes.size();
+        scene.planes.push_back({unit_or_zero(normal), distance / scale / length, material_index(m, scene)});
+    }
+    if (!named.name.empty()) scene.named_surfaces.push_back(std::move(named));
+}
+
+void read_surfaces(const YamlReader& r, const YAML::Node& node, Scene& scene) {
+    if (node.IsNull()) return;
+    r.expect_list(node, "'surfaces'");
+    for (const YAML::Node& surface : node) read_surface(r, surface, scene);
+}
+
+void read_light(const YamlReader& r, const MapReader::Entry& entry, Scene& scene) {
+    const MapReader any(r, entry.value, "light '" + entry.key + "'", {});
+    const int type = r.choice(any.value("type"), "light type", {"ambient", "directional", "spot"});
+    if (type == 0) {
+        const MapReader m(r, entry.value, "ambient light '" + entry.key + "'", {"type", "color", "intensity"});
+        if (!scene.ambient_lights.empty())
+            r.fail(entry.key_node, "second ambient light '" + entry.key + "' (at most one is allowed)");
+        scene.ambient_lights.push_back({entry.key, m.color("color"), m.number_at_least("intensity", 0)});
+    } else if (type == 1) {
+        const MapReader m(r, entry.value, "directional light '" + entry.key + "'",
+                          {"type", "color", "intensity", "direction"});
+        scene.directional_lights.push_back(
+            {entry.key, m.color("color"), m.number_at_least("intensity", 0), unit_or_zero(m.direction("direction"))});
+    } else {
+        const MapReader m(r, entry.value, "spot light '" + entry.key + "'",
+                          {"type", "color", "intensity", "position", "direction", "max_angle"});
+        SpotLight<double> spot;
+        spot.name = entry.key;
+        spot.color = m.color("color");
+        spot.intensity = m.number_at_least("intensity", 0);
+        spot.position = m.vec3("position");
+        spot.axis = unit_or_zero(m.direction("direction"));
+        spot.max_angle = m.has("max_angle") ? m.positive("max_angle") : kTwoPi;
+        scene.spot_lights.push_back(spot);
+    }
+}
+
+void read_lights(const YamlReader& r, const YAML::Node& node, Scene& scene) {
+    if (node.IsNull()) return;
+    const MapReader names(r, node, "'lights'", {});
+    for (const MapReader::Entry& e : names.entries()) read_light(r, e, scene);
+}
+
+Camera read_camera(const YamlReader& r, const MapReader::Entry& entry) {
+    const MapReader any(r, entry.value, "camera '" + entry.key + "'", {});
+    const int type = r.choice(any.value("type"), "camera type", {"perspective", "orthographic"});
+    const bool perspective = type == 0;
+    Keys keys = {"type", "width", "height", "view_point", "look_at", "up"};
+    if (perspective) keys.push_back("projection_distance");
+    const MapReader m(r, entry.value, std::string(perspective ? "perspective" : "orthographic") +
+                                          " camera '" + entry.key + "'", keys);
+    Camera cam;
+    cam.name = entry.key;
+    cam.projection = perspective ? Projection::perspective : Projection::orthographic;
+    cam.width = m.integer("width", 1, Limits::max_image_side);
+    cam.height = m.integer("height", 1, Limits::max_image_side);
+    cam.view_point = m.vec3("view_point");
+    cam.look_at = m.direction("look_at");
+    cam.up = m.direction("up");
+    if (perspective) cam.projection_distance = m.positive("projection_distance");
+    return cam;
+}
+
+void read_cameras(const YamlReader& r, const MapReader& top, Scene& scene) {
+    const YAML::Node node = top.value("cameras");
+    const MapReader names(r, node, "'cameras'", {});
+    if (names.entries().empty()) r.fail(node, "'cameras' must name at least one camera");
+    for (const MapReader::Entry& e : names.entries()) scene.cameras.push_back(read_camera(r, e));
+}
+
+}  // namespace
+
+void read_render_settings(const YamlReader& r, const YAML::Node& node, RenderSettings& settings) {
+    if (node.IsNull()) return;
+    const MapReader m(r, node, "'render'", {"samples_per_pixel", "max_depth", "precision"});
+    if (m.has("samples_per_pixel"))
+        settings.samples_per_pixel = m.integer("samples_per_pixel", 1, Limits::max_samples_per_pixel);
+    if (m.has("max_depth")) settings.max_depth = m.integer("max_depth", 0, Limits::max_depth);
+    if (m.has("precision"))
+        settings.precision = r.choice(m.value("precision"), "precision", {"float", "double"}) == 0
+                                 ? Precision::float32
+                                 : Precision::float64;
+}
+
+Effects read_effects(const YamlReader& r, const YAML::Node& node) {
+    r.expect_list(node, "'effects'");
+    Effects fx{false, false, false, false, false};
+    bool* flags[] = {&fx.ambient, &fx.diffuse, &fx.specular, &fx.shadows, &fx.glazing};
+    for (const YAML::Node& name : node)
+        *flags[r.choice(name, "effect", {"ambient", "diffuse", "specular", "shadows", "glazing"})] = true;
+    return fx;
+}
+
+namespace {
+
+std::string short_number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+}
+
+// Values that are legal but almost surely a mistake of units.
+std::vector<std::string> unit_warnings(const Scene& scene, const std::string& file) {
+    std::vector<std::string> out;
+    const std::string at = file + ": warning: ";
+    double brightest = 0;
+    size_t colours = 0;
+    auto see = [&](const dvec3& c) {
+        brightest = std::max(brightest, max_abs_component(c));
+        ++colours;
+    };
+    for (const auto& m : scene.materials) {
+        see(m.ambient_color);
+        see(m.diffuse_color);
+        see(m.specular_color);
+    }
+    for (const auto& l : scene.ambient_lights) see(l.color);
+    for (const auto& l : scene.directional_lights) see(l.color);
+    for (const auto& l : scene.spot_lights) see(l.color);
+    if (colours > 0 && brightest > 0 && brightest <= 1)
+        out.push_back(at + "every colour is at most 1: 0-1 colours? firsthit's colours are 0-255, so the image "
+                           "comes out nearly black");
+    for (const auto& l : scene.spot_lights)
+        if (l.max_angle > kTwoPi)
+            out.push_back(at + "spot light '" + l.name + "': max_angle " + short_number(l.max_angle) +
+                          " is over 2 pi: degrees? max_angle is in radians");
+    for (const Camera& c : scene.cameras) {
+        if (c.projection != Projection::perspective) continue;
+        const double fov = 2 * std::atan(10 / c.projection_distance) * 180 / 3.14159265358979323846;
+        if (fov < 1 || fov > 170)
+            out.push_back(at + "camera '" + c.name + "': projection_distance " + short_number(c.projection_distance) +
+                          " gives a field of view of " + short_number(fov) + " degrees (10 gives 90)");
+    }
+    return out;
+}
+
+// The scene in `text` (read from the file when it is null).
+SceneFile load_scene_text(const std::string* text, const std::string& path) {
+    try {
+        const YamlReader r(path);
+        const MapReader top(r, text ? r.parse_map(*text, "scene") : r.load_map("scene"), "scene",
+                            {"materials", "surfaces", "lights", "cameras", "render", "effects"});
+        SceneFile file;
+        Scene& scene = file.scene;
+        // Materials first, whatever the file's order: surfaces refer to them.
+        read_materials(r, block(top, "materials"), scene);
+        read_surfaces(r, block(top, "surfaces"), scene);
+        if (!scene.vertex_normals.empty()) scene.vertex_normals.resize(scene.triangles.size());
+        read_lights(r, block(top, "lights"), scene);
+        read_cameras(r, top, scene);
+        read_render_settings(r, block(top, "render"), file.settings);
+        if (top.has("effects")) file.settings.effects = read_effects(r, top.value("effects"));
+        file.warnings = unit_warnings(scene, path);
+        return file;
+    } catch (const YAML::Exception& e) {
+        throw to_input_error(path, e);
+    }
+}
+
+}  // namespace
+
+SceneFile load_scene(const std::string& path) { return load_scene_text(nullptr, path); }
+
+SceneFile load_scene_from_string(const std::string& text, const std::string& file) {
+    return load_scene_text(&text, file);
+}
+
+}  // namespace fh

@@ -1,0 +1,217 @@
+// Whole-file bad input, before any value is read: unreadable, folder, device,
+// too large, binary, not UTF-8, nested thousands deep, several documents; and
+// the regression inputs the fuzzer found (tests/yaml/fuzz_regressions/).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "text/input_error.h"
+#include "yaml/movie_loader.h"
+#include "yaml/scene_loader.h"
+#include "text/text_input.h"
+#include "yaml/scene_error.h"
+#include "test_util.h"
+
+namespace fh {
+namespace {
+
+using test::write_temp_file;
+
+const std::string kCamera =
+    "cameras:\n"
+    "  cam: {type: perspective, width: 10, height: 10, view_point: [0, 0, 5], look_at: [0, 0, -1],\n"
+    "        up: [0, 1, 0], projection_distance: 1}\n";
+
+std::string scene_error(const std::string& text) { return test::scene_error(text, "input.yaml"); }
+using test::error_of_file;
+
+TEST(InputFiles, EmptyFile) {
+    EXPECT_EQ(scene_error(""), "FILE: error: empty scene file");
+    EXPECT_EQ(scene_error("\n\n   \n"), "FILE: error: empty scene file");
+}
+
+TEST(InputFiles, DirectoryGivenAsFile) {
+    EXPECT_EQ(error_of_file(test::temp_dir().string()), "FILE: error: cannot read file: is a directory");
+}
+
+TEST(InputFiles, DeviceOrPipeIsNotRead) {
+    // /dev/zero would never end; it is refused without reading.
+    EXPECT_EQ(error_of_file("/dev/zero"), "FILE: error: cannot read file: not a regular file");
+    EXPECT_EQ(error_of_file("/dev/null"), "FILE: error: cannot read file: not a regular file");
+}
+
+TEST(InputFiles, FileOfSeveralMegabytesIsRefusedUnread) {
+    // 5 MB of valid YAML: refused by its size, before parsing.
+    std::string text = kCamera;
+    while (text.size() < 5'000'000) text += "# padding padding padding padding padding padding padding\n";
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(scene_error(text), "FILE: error: file too large: " + std::to_string(text.size()) +
+                                     " bytes (the limit is 1048576 bytes, 1 MiB)");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+    EXPECT_THROW(load_scene_from_string(text, "x.yaml"), InputError);
+}
+
+TEST(InputFiles, JustUnderTheLimitLoads) {
+    // Exactly 1 MiB loads; one byte more does not.
+    std::string text = kCamera;
+    const std::string pad = "# padding\n";
+    while (text.size() + pad.size() <= kMaxInputBytes) text += pad;
+    text += std::string(kMaxInputBytes - text.size() - 1, '#') + "\n";
+    ASSERT_EQ(text.size(), kMaxInputBytes);
+    const Scene s = load_scene(write_temp_file("big_ok.yaml", text)).scene;
+    EXPECT_EQ(s.cameras.size(), 1u);
+    EXPECT_EQ(scene_error(text + "\n"), "FILE: error: file too large: 1048577 bytes (the limit is 1048576 bytes, 1 MiB)");
+}
+
+TEST(InputFiles, BinaryFile) {
+    // A PNG's first bytes, and a NUL inside otherwise valid text.
+    EXPECT_EQ(scene_error(std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16)),
+              "FILE:1:1: error: not UTF-8 text: byte 0x89 (scene and movie files are UTF-8 text)");
+    EXPECT_EQ(scene_error(kCamera + std::string("render: {max_depth: 1\0}\n", 24)),
+              "FILE:4:22: error: binary data, not text: control byte 0x00 (scene and movie files are UTF-8 text)");
+    EXPECT_EQ(scene_error("a: \x1b[31m\n"),
+              "FILE:1:4: error: binary data, not text: control byte 0x1b (scene and movie files are UTF-8 text)");
+}
+
+TEST(InputFiles, NotUtf8) {
+    EXPECT_EQ(scene_error("# caf\xe9 in Latin-1\n" + kCamera),
+              "FILE:1:6: error: not UTF-8 text: byte 0xe9 (scene and movie files are UTF-8 text)");
+    // Overlong form of '/', and a UTF-16 surrogate.
+    EXPECT_EQ(scene_error("a: \xc0\xaf\n"),
+              "FILE:1:4: error: not UTF-8 text: byte 0xc0 (scene and movie files are UTF-8 text)");
+    EXPECT_EQ(scene_error("a: \xed\xa0\x80\n"),
+              "FILE:1:4: error: not UTF-8 text: byte 0xed (scene and movie files are UTF-8 text)");
+}
+
+TEST(InputFiles, Utf8TextIsFine) {
+    const Scene s = load_scene(write_temp_file("utf8.yaml", "\xef\xbb\xbf# caf\xc3\xa9 \xe2\x9c\x93 \xf0\x9f\x8e\xa5\r\n" +
+                                                                kCamera + "materials:\n  \xc3\xa9t\xc3\xa9: {color: [1, 2, 3],"
+                                                                          " ambient: 0, diffuse: 0, specular: 0, phong_exponent: 1}\n")).scene;
+    ASSERT_EQ(s.material_names.size(), 1u);
+    EXPECT_EQ(s.material_names[0], "\xc3\xa9t\xc3\xa9");
+}
+
+TEST(InputFiles, NestedThousandsDeep) {
+    // Flow style, block sequences on one line, and block maps: all refused
+    // at the first level past the limit, without deep recursion.
+    EXPECT_EQ(scene_error("a: " + std::string(5000, '[') + std::string(5000, ']') + "\n"),
+              "FILE:1:67: error: maps and lists nested more than 64 levels deep");
+    EXPECT_EQ(scene_error("a: " + std::string(100000, '{') + "\n"),
+              "FILE:1:67: error: maps and lists nested more than 64 levels deep");
+    std::string dashes;
+    for (int i = 0; i < 3000; ++i) dashes += "- ";
+    EXPECT_EQ(scene_error(dashes + "x\n"), "FILE:1:129: error: maps and lists nested more than 64 levels deep");
+    std::string block;
+    for (int i = 0; i < 200; ++i) block += std::string(size_t(i), ' ') + "k:\n";
+    EXPECT_EQ(scene_error(block), "FILE:65:65: error: maps and lists nested more than 64 levels deep");
+}
+
+TEST(InputFiles, NestingUpToTheLimitIsParsed) {
+    // The top-level map is level 1: 63 brackets inside it are fine (and then
+    // the key is unknown); 64 are one too many.
+    EXPECT_EQ(scene_error("x: " + std::string(63, '[') + std::string(63, ']') + "\n"),
+              "FILE:1:1: error: unknown key 'x' in scene");
+    EXPECT_EQ(scene_error("x: " + std::string(64, '[') + std::string(64, ']') + "\n"),
+              "FILE:1:67: error: maps and lists nested more than 64 levels deep");
+}
+
+TEST(InputFiles, SeveralDocuments) {
+    EXPECT_EQ(scene_error(kCamera + "---\n" + kCamera), "FILE:4:1: error: expected a single yaml document");
+    EXPECT_EQ(scene_error(kCamera + "---\n"), "FILE:4:1: error: expected a single yaml document");
+}
+
+TEST(InputFiles, AliasesAreNotExpanded) {
+    // A "billion laughs": each level refers to the one before ten times.
+    std::string text = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
+    for (int i = 1; i < 30; ++i) {
+        const std::string prev = "*a" + std::to_string(i - 1);
+        text += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [" + prev;
+        for (int k = 1; k < 10; ++k) text += ", " + prev;
+        text += "]\n";
+    }
+    EXPECT_EQ(scene_error(text), "FILE:1:1: error: unknown key 'a0' in scene");
+}
+
+TEST(InputFiles, MessagesAreOneShortLine) {
+    // A value with a line break and a control character (YAML escapes),
+    // and a name of 100 kB: the message stays one line and short.
+    EXPECT_EQ(scene_error("cameras:\n  c: {type: \"persp\\nective\\x07\"}\n"),
+              "FILE:2:13: error: unknown camera type 'persp\\x0aective\\x07' (did you mean 'perspective'?)");
+    const std::string message = scene_error("cameras:\n  c: {type: " + std::string(100000, 'p') + "}\n");
+    EXPECT_LT(message.size(), 500u);
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+    EXPECT_EQ(message.rfind("FILE:2:13: error: unknown camera type 'ppp", 0), 0u) << message;
+}
+
+TEST(InputFiles, LongNamesGetNoQuadraticSuggestion) {
+    // An undefined material name of 400 kB next to a defined one of 1000
+    // bytes (YAML keys stop at 1024): no "did you mean", which would compare
+    // them at quadratic cost (400 million cells).
+    const std::string defined(1000, 'm'), used = std::string(400000, 'm') + "n";
+    const auto start = std::chrono::steady_clock::now();
+    const std::string message =
+        scene_error(kCamera + "materials:\n  " + defined +
+                    ": {color: [1, 1, 1], ambient: 0, diffuse: 0, specular: 0, phong_exponent: 1}\n"
+                    "surfaces:\n  - {type: sphere, center: [0, 0, 0], radius: 1, material: " + used + "}\n");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+    EXPECT_EQ(message.rfind("FILE:7:", 0), 0u) << message.substr(0, 100);
+    EXPECT_NE(message.find("error: undefined material 'mmmm"), std::string::npos) << message.substr(0, 100);
+    EXPECT_EQ(message.find("did you mean"), std::string::npos);
+}
+
+TEST(InputFiles, ManyKeysAreCheckedInLinearTime) {
+    // 60000 names in one map, the last one repeated: found without comparing
+    // every pair (which took seconds).
+    std::string text = kCamera + "lights:\n";
+    for (int i = 0; i < 60000; ++i) text += "  l" + std::to_string(i) + ": 0\n";
+    text += "  l7: 0\n";
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(scene_error(text), "FILE:60005:3: error: duplicate key 'l7' in 'lights'");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+}
+
+TEST(InputFiles, FromStringEqualsFromFile) {
+    const Scene a = load_scene(std::string(FIRSTHIT_SOURCE_DIR) + "/animations/scene.yaml").scene;
+    std::ifstream in(std::string(FIRSTHIT_SOURCE_DIR) + "/animations/scene.yaml", std::ios::binary);
+    const std::string content{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const Scene b = load_scene_from_string(content, "scene.yaml").scene;
+    EXPECT_EQ(a.material_names, b.material_names);
+    EXPECT_EQ(a.spheres.size(), b.spheres.size());
+    EXPECT_EQ(a.cameras.size(), b.cameras.size());
+    try {
+        load_scene_from_string("cameras: {}\n", "in memory.yaml");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.formatted(), "in memory.yaml:1:10: error: 'cameras' must name at least one camera");
+    }
+}
+
+// Inputs the fuzzer found (scripts/fuzz.sh); each hung or crashed once.
+std::string regression(const std::string& name) {
+    return std::string(FIRSTHIT_SOURCE_DIR) + "/tests/yaml/fuzz_regressions/" + name;
+}
+
+TEST(FuzzRegressions, StrayCommaNoLongerHangsTheYamlParser) {
+    // yaml-cpp 0.7 loops forever (allocating) on a ',' that cannot start a
+    // value (jbeder/yaml-cpp#1040); the loader stops at the second document.
+    EXPECT_EQ(scene_error(","), "FILE:1:1: error: invalid yaml: unexpected ','");
+    EXPECT_EQ(scene_error("- a\n, b\n"), "FILE:2:1: error: invalid yaml: unexpected ','");
+    EXPECT_EQ(scene_error("--- ,\n"), "FILE:1:5: error: invalid yaml: unexpected ','");
+    EXPECT_EQ(error_of_file(regression("scene-timeout-stray-comma.yaml")),
+              "FILE:3:4: error: invalid yaml: unexpected ','");
+    const std::string movie = regression("movie-timeout-comma-at-top-level.yaml");
+    EXPECT_FALSE(is_movie_file(movie));
+    try {
+        load_movie(movie);
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.formatted(), movie + ":1:1: error: invalid yaml: unexpected ','");
+    }
+}
+
+}  // namespace
+}  // namespace fh
