@@ -82,8 +82,8 @@ dvec3 value_of(const Target& t, const Scene& scene, const Camera& camera) {
         if (t.light == LightKind::directional) return scene.directional_lights[t.index].direction;
         return scene.spot_lights[t.index].axis;
     case Property::light_max_angle: return dvec3(scene.spot_lights[t.index].max_angle);
-    case Property::sphere_center: return scene.spheres[s->index].center;
-    case Property::sphere_radius: return dvec3(scene.spheres[s->index].radius);
+    case Property::sphere_center: return scene.spheres()[s->index].center;
+    case Property::sphere_radius: return dvec3(scene.spheres()[s->index].radius);
     case Property::plane_normal: return scene.planes[s->index].normal;
     case Property::plane_distance: return dvec3(scene.planes[s->index].distance);
     case Property::transform_translate: return s->transform.translate;
@@ -126,8 +126,8 @@ void set_value(const Target& t, const dvec3& v, Scene& scene, Camera& camera) {
         else scene.spot_lights[t.index].axis = unit_or_zero(v);
         break;
     case Property::light_max_angle: scene.spot_lights[t.index].max_angle = v.x; break;
-    case Property::sphere_center: scene.spheres[s->index].center = v; break;
-    case Property::sphere_radius: scene.spheres[s->index].radius = v.x; break;
+    case Property::sphere_center: scene.spheres()[s->index].center = v; break;
+    case Property::sphere_radius: scene.spheres()[s->index].radius = v.x; break;
     case Property::plane_normal: scene.planes[s->index].normal = unit_or_zero(v); break;
     case Property::plane_distance: scene.planes[s->index].distance = v.x; break;
     case Property::material_color: m->ambient_color = m->diffuse_color = m->specular_color = v; break;

@@ -16,7 +16,7 @@ namespace fh {
 namespace {
 void print_scene(const Scene& s, const RenderSettings& settings) {
     std::cout << "materials: " << s.materials.size() << "\n"
-              << "spheres: " << s.spheres.size() << "\n"
+              << "spheres: " << s.spheres().size() << "\n"
               << "planes: " << s.planes.size() << "\n"
               << "triangles: " << s.triangles.size() << "\n"
               << "meshes: " << s.meshes << "\n"

@@ -1,22 +1,17 @@
-// The nearest intersection along a ray, and the surface point it names.
+// The nearest intersection along one ray (tests, the viewer): how far, and
+// on which primitive (render/primitive_ids.h numbers them).
 #pragma once
-
-#include <cstdint>
 
 #include "core/vec.h"
 
 namespace fh {
 
-enum class ShapeKind : std::uint8_t { none, sphere, plane, triangle };
-
-// The nearest hit of one ray (tests, the viewer): which primitive, how far.
 template <typename T>
 struct Hit {
     T t = kInfinity<T>;
-    ShapeKind kind = ShapeKind::none;
-    int index = -1;  // into the scene's array of that kind
+    int prim = -1;  // its primitive id; -1: none
 
-    bool found() const { return kind != ShapeKind::none; }
+    bool found() const { return prim >= 0; }
 };
 
 }  // namespace fh

@@ -2,8 +2,8 @@
 // t = (d - n.o) / (n.dir); a ray (nearly) parallel to the plane never hits it.
 #pragma once
 
-#include "core/hit.h"
 #include "core/packet.h"
+#include "geometry/surface.h"
 
 namespace fh {
 
@@ -43,6 +43,14 @@ struct Plane {
     // One ray: the packet formula with that ray in every lane.
     T intersect(const Ray<T>& ray, T t_min, T t_max) const {
         return intersect(RayPacket<T>::splat(ray), t_min, splat(t_max))[0];
+    }
+
+    PrimitiveSurface<T> surface() const {
+        return PrimitiveSurface<T>::flat_through(distance * normal, normal, material);
+    }
+    template <typename U>
+    Plane<U> in() const {
+        return {Vec3<U>(normal), U(distance), material};
     }
 };
 

@@ -24,8 +24,9 @@
 #include <limits>
 
 #include "core/exact.h"
-#include "core/hit.h"
 #include "core/packet.h"
+#include "geometry/aabb.h"
+#include "geometry/surface.h"
 
 namespace fh {
 
@@ -71,6 +72,13 @@ struct Sphere {
     // One ray: the packet formula with that ray in every lane.
     T intersect(const Ray<T>& ray, T t_min, T t_max) const {
         return intersect(RayPacket<T>::splat(ray), t_min, splat(t_max))[0];
+    }
+
+    Aabb bounds() const { return {dvec3(center) - double(radius), dvec3(center) + double(radius)}; }
+    PrimitiveSurface<T> surface() const { return PrimitiveSurface<T>::round_about(center, radius, material); }
+    template <typename U>
+    Sphere<U> in() const {
+        return {Vec3<U>(center), U(radius), material};
     }
 
 private:

@@ -35,8 +35,8 @@
 #include <limits>
 
 #include "core/exact.h"
-#include "core/hit.h"
 #include "core/packet.h"
+#include "geometry/surface.h"
 
 namespace fh {
 
@@ -129,6 +129,8 @@ struct Triangle {
         const RayPacket<T> packet = RayPacket<T>::splat(ray);
         return intersect(RayBasis<T>(packet), t_min, splat(t_max))[0];
     }
+
+    PrimitiveSurface<T> surface() const { return PrimitiveSurface<T>::flat_through(v0, normal, material); }
 };
 
 }  // namespace fh

@@ -1,5 +1,5 @@
-// A bounding volume hierarchy over the scene's bounded primitives (spheres
-// and triangles; planes, unbounded, stay outside it): binary nodes with boxes,
+// A bounding volume hierarchy over the scene's bounded primitives (every
+// primitive but the planes, which are unbounded): binary nodes with boxes,
 // split by the surface area heuristic over 16 bins, built on the thread pool.
 // Boxes are floats rounded outward from the double bounds, so a box always
 // holds its primitives in either tracer precision, at half the memory.
@@ -10,33 +10,11 @@
 #include <vector>
 
 #include "core/big_array.h"
-#include "core/vec.h"
+#include "geometry/aabb.h"
 
 namespace fh {
 
 class ThreadPool;
-
-struct Aabb {
-    dvec3 lo{kInfinity<double>};
-    dvec3 hi{-kInfinity<double>};
-
-    void grow(const dvec3& p) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    void grow(const Aabb& b) {
-        lo = glm::min(lo, b.lo);
-        hi = glm::max(hi, b.hi);
-    }
-    bool empty() const { return !(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z); }
-    dvec3 center() const { return 0.5 * (lo + hi); }
-    // Half the surface area: what the heuristic compares.
-    double half_area() const {
-        if (empty()) return 0;
-        const dvec3 d = hi - lo;
-        return d.x * d.y + d.y * d.z + d.z * d.x;
-    }
-};
 
 struct BvhNode {
     float lo[3], hi[3];  // rounded outward

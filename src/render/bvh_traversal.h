@@ -14,6 +14,7 @@
 
 #include "core/packet.h"
 #include "render/bvh.h"
+#include "render/primitive_ids.h"
 
 namespace fh {
 
@@ -47,29 +48,48 @@ struct NodeBox {
 // 32 bytes in float, 64 in double, so a visit reads one cache line, not a
 // box from one array and the node from another. The nodes are in
 // depth-first order, so an inner node's first child is the next node.
+// What it holds takes two integers; the accessors name their meanings.
 template <typename T>
 struct alignas(8 * sizeof(T)) WalkNode {
     NodeBox<T> box;
-    // A leaf: with a >= 0, the triangles a .. a + count() - 1 (renumbered in
-    // leaf order: nothing to look up between a node and its triangles), also
-    // held column by column (FlatGeometry::blocks[block()] in double,
-    // packed_rows in float); else Bvh::prims[~a ..], which
-    // may hold spheres. Inner: the second child.
-    std::int32_t a;
-    std::int32_t b;  // a leaf: count() + 16 block() (> 0); inner: -1 - the split axis
 
-    bool leaf() const { return b > 0; }
-    int count() const { return b & 15; }
-    int block() const { return b >> 4; }
-    int axis() const { return -1 - b; }
+    bool leaf() const { return packed_ > 0; }
+
+    // An inner node: the second child (the first is the next node), and the
+    // split axis, along which the second child holds the larger coordinates.
+    int second_child() const { return index_; }
+    int axis() const { return -1 - packed_; }
+
+    // A leaf holds count() primitives, either
+    int count() const { return packed_ & 15; }
+    //  - a run of triangles, first_triangle() .. + count() - 1 (triangle
+    //    indices, renumbered in leaf order: nothing to look up between a node
+    //    and its triangles), also held column by column (FlatGeometry::blocks
+    //    [block()] in double, packed_rows in float);
+    bool triangle_run() const { return index_ >= 0; }
+    int first_triangle() const { return index_; }
+    int block() const { return packed_ >> 4; }
+    //  - or any primitives, listed by id in Bvh::prims from first_listed() on.
+    int first_listed() const { return ~index_; }
+
+    static WalkNode inner(const NodeBox<T>& box, int axis) { return {box, 0, -1 - axis}; }
+    static WalkNode run(const NodeBox<T>& box, int first_triangle, int count, int block) {
+        return {box, first_triangle, count + 16 * block};
+    }
+    static WalkNode listed(const NodeBox<T>& box, int first, int count) { return {box, ~first, count}; }
+    void set_second_child(int node) { index_ = node; }
+
+    // inner: the second child; a run: its first triangle (>= 0); listed: ~its first entry (< 0).
+    std::int32_t index_;
+    // inner: -1 - the axis (< 0); a leaf: count + 16 block (> 0).
+    std::int32_t packed_;
 };
-static_assert(kMaxLeafSize < 16, "a leaf's count takes 4 bits of WalkNode::b");
+static_assert(kMaxLeafSize < 16, "a leaf's count takes 4 bits of WalkNode::packed_");
 
-// The walk's copy of a hierarchy (empty for an empty one). spheres: how
-// many of its input indices are spheres (the triangles follow them). The
-// leaves that hold a run of triangles number their blocks 0, 1, ... in order.
+// The walk's copy of a hierarchy over primitive ids (empty for an empty one).
+// The leaves that hold a run of triangles number their blocks 0, 1, ... in order.
 template <typename T>
-BigArray<WalkNode<T>> walk_nodes_of(const Bvh& bvh, int spheres) {
+BigArray<WalkNode<T>> walk_nodes_of(const Bvh& bvh, const PrimitiveIds& ids) {
     BigArray<WalkNode<T>> out;
     int blocks = 0;
     if (bvh.empty()) return out;
@@ -84,21 +104,20 @@ BigArray<WalkNode<T>> walk_nodes_of(const Bvh& bvh, int spheres) {
         const Todo t = todo.back();
         todo.pop_back();
         const int index = int(out.size());
-        if (t.parent >= 0) out[size_t(t.parent)].a = index;
+        if (t.parent >= 0) out[size_t(t.parent)].set_second_child(index);
         const BvhNode& n = bvh.nodes[size_t(t.node)];
-        WalkNode<T> w{{{T(n.lo[0]), T(n.lo[1]), T(n.lo[2])}, {T(n.hi[0]), T(n.hi[1]), T(n.hi[2])}}, 0, 0};
+        const NodeBox<T> box{{T(n.lo[0]), T(n.lo[1]), T(n.lo[2])}, {T(n.hi[0]), T(n.hi[1]), T(n.hi[2])}};
         if (n.leaf()) {
             const std::int32_t* p = &bvh.prims[size_t(n.first)];
-            bool run = p[0] >= spheres;
+            bool run = ids.is_triangle(p[0]);
             for (int j = 1; run && j < n.count; ++j) run = p[j] == p[0] + j;
-            w.a = run ? p[0] - spheres : ~n.first;
-            w.b = n.count + (run ? 16 * blocks++ : 0);
+            out.push_back(run ? WalkNode<T>::run(box, ids.triangle_index(p[0]), n.count, blocks++)
+                              : WalkNode<T>::listed(box, n.first, n.count));
         } else {
-            w.b = -1 - n.axis;
+            out.push_back(WalkNode<T>::inner(box, n.axis));
             todo.push_back({n.second, index});
             todo.push_back({n.first, -1});
         }
-        out.push_back(w);
     }
     return out;
 }
@@ -140,8 +159,8 @@ FH_HOT_INLINE void for_each_leaf(const BigArray<WalkNode<T>>& nodes, const RayPa
         }
         // Children split along the axis: the second holds the larger coordinates.
         const bool second_nearer = rays.negative[n.axis()];
-        stack[top++] = second_nearer ? i + 1 : n.a;  // visited second
-        stack[top++] = second_nearer ? n.a : i + 1;
+        stack[top++] = second_nearer ? i + 1 : n.second_child();  // visited second
+        stack[top++] = second_nearer ? n.second_child() : i + 1;
     }
 }
 

@@ -17,12 +17,13 @@ Aabb padded(Aabb b) {
     return b;
 }
 
-// The BVH's input: the spheres' boxes, then the triangles' (scene indices,
-// in the flat order).
+// The BVH's input, by primitive id: the shapes' boxes, the planes' (empty:
+// left out), then the triangles' (scene indices, in the flat order).
 std::vector<Aabb> bounds_of(const Scene& scene, const std::vector<std::int32_t>& triangles) {
     std::vector<Aabb> boxes;
-    boxes.reserve(scene.spheres.size() + triangles.size());
-    for (const auto& s : scene.spheres) boxes.push_back(padded({s.center - s.radius, s.center + s.radius}));
+    boxes.reserve(scene.shapes.size() + scene.planes.size() + triangles.size());
+    scene.shapes.each([&](const auto& s) { boxes.push_back(padded(s.bounds())); });
+    boxes.resize(boxes.size() + scene.planes.size());
     for (const std::int32_t i : triangles) {
         const Triangle<double>& t = scene.triangles[size_t(i)];
         Aabb b;
@@ -61,24 +62,21 @@ bool smooth(const Scene& scene, size_t i) {
     return n[0] != dvec3(0) || n[1] != dvec3(0) || n[2] != dvec3(0);
 }
 
-// Spheres, planes and the triangles listed (scene indices, in this order)
+// Shapes, planes and the triangles listed (scene indices, in this order)
 // with their surfaces, in primitive id order.
 template <typename T>
 void flatten(const Scene& scene, FlatGeometry<T>& g) {
-    for (const auto& s : scene.spheres) {
-        g.spheres.push_back({Vec3<T>(s.center), T(s.radius), s.material});
-        g.surfaces.push_back(surface_of(g.spheres.back()));
-    }
-    for (const auto& p : scene.planes) {
-        g.planes.push_back({Vec3<T>(p.normal), T(p.distance), p.material});
-        g.surfaces.push_back(surface_of(g.planes.back()));
-    }
+    g.shapes = scene.shapes.in<T>();
+    for (const auto& p : scene.planes) g.planes.push_back(p.template in<T>());
+    g.ids = {int(g.shapes.size()), int(g.planes.size()), int(g.triangle_source.size())};
+    g.surfaces.reserve(size_t(g.ids.end()));
+    g.shapes.each([&](const auto& s) { g.surfaces.push_back(s.surface()); });
+    for (const auto& p : g.planes) g.surfaces.push_back(p.surface());
     g.triangles.reserve(g.triangle_source.size());
-    g.surfaces.reserve(g.surfaces.size() + g.triangle_source.size());
     for (const std::int32_t i : g.triangle_source) {
         const Triangle<double>& t = scene.triangles[size_t(i)];
         g.triangles.push_back({Vec3<T>(t.v0), Vec3<T>(t.v1), Vec3<T>(t.v2), Vec3<T>(t.normal), t.material});
-        g.surfaces.push_back(surface_of(g.triangles.back()));
+        g.surfaces.push_back(g.triangles.back().surface());
         if (!smooth(scene, size_t(i))) continue;
         const SmoothTriangle<T> st = SmoothTriangle<T>::make(t, scene.vertex_normals[size_t(i)]);
         // A triangle too small for T's range to solve for weights stays flat.
@@ -94,18 +92,19 @@ void flatten(const Scene& scene, FlatGeometry<T>& g) {
 // million. (Small scenes keep the file's order.)
 template <typename T>
 void in_leaf_order(FlatGeometry<T>& g) {
-    const int ns = int(g.spheres.size()), np = int(g.planes.size());
+    const PrimitiveIds& ids = g.ids;
     BigArray<Triangle<T>> triangles;
-    BigArray<PrimitiveSurface<T>> surfaces(g.surfaces.begin(), g.surfaces.begin() + ns + np);
+    BigArray<PrimitiveSurface<T>> surfaces(g.surfaces.begin(), g.surfaces.begin() + ids.first_triangle());
     std::vector<std::int32_t> source;
     triangles.reserve(g.triangles.size());
     source.reserve(g.triangles.size());
-    for (std::int32_t& i : g.bvh.prims) {
-        if (i < ns) continue;
-        triangles.push_back(g.triangles[size_t(i - ns)]);
-        surfaces.push_back(g.surfaces[size_t(np + i)]);
-        source.push_back(g.triangle_source[size_t(i - ns)]);
-        i = ns + std::int32_t(triangles.size()) - 1;
+    for (std::int32_t& id : g.bvh.prims) {
+        if (!ids.is_triangle(id)) continue;
+        const size_t k = size_t(ids.triangle_index(id));
+        triangles.push_back(g.triangles[k]);
+        surfaces.push_back(g.surfaces[size_t(id)]);
+        source.push_back(g.triangle_source[k]);
+        id = ids.triangle(int(triangles.size()) - 1);
     }
     g.triangles.swap(triangles);
     g.surfaces.swap(surfaces);
@@ -126,19 +125,20 @@ constexpr int kLeafTriangles = std::min(TriangleBlock<T>::kColumns, kMaxLeafSize
 // The walk's nodes and blocks over g.bvh (triangles already in leaf order).
 template <typename T>
 void prepare_walk(FlatGeometry<T>& g) {
-    g.walk_nodes = walk_nodes_of<T>(g.bvh, int(g.spheres.size()));
+    g.walk_nodes = walk_nodes_of<T>(g.bvh, g.ids);
     g.blocks.clear();
     if constexpr (FlatGeometry<T>::kPackedRows) {
         // A vector of NaN past the last row: the one-ray test reads that far.
         g.packed_rows.assign(9 * g.triangles.size() + kLanes<T>, std::numeric_limits<T>::quiet_NaN());
         for (const WalkNode<T>& n : g.walk_nodes)
-            if (n.leaf() && n.a >= 0)
-                TriangleRows<T>::write(&g.triangles[size_t(n.a)], n.count(), n.count(),
-                                       &g.packed_rows[9 * size_t(n.a)]);
+            if (n.leaf() && n.triangle_run())
+                TriangleRows<T>::write(&g.triangles[size_t(n.first_triangle())], n.count(), n.count(),
+                                       &g.packed_rows[9 * size_t(n.first_triangle())]);
         return;
     }
     for (const WalkNode<T>& n : g.walk_nodes)  // numbered in this order
-        if (n.leaf() && n.a >= 0) g.blocks.push_back(TriangleBlock<T>::make(&g.triangles[size_t(n.a)], n.count()));
+        if (n.leaf() && n.triangle_run())
+            g.blocks.push_back(TriangleBlock<T>::make(&g.triangles[size_t(n.first_triangle())], n.count()));
 }
 
 template <typename T>
@@ -200,7 +200,7 @@ FlatGeometry<T> FlatGeometry<T>::refit(const Scene& moved, ThreadPool* pool) con
     // this tree holds among them.
     size_t kept = 0;
     for (const auto& t : moved.triangles) kept += !t.degenerate();
-    bool same = moved.spheres.size() == spheres.size() && moved.planes.size() == planes.size() &&
+    bool same = moved.shapes.size() == shapes.size() && moved.planes.size() == planes.size() &&
                 kept == triangles.size();
     for (size_t k = 0; same && k < triangle_source.size(); ++k) {
         const size_t i = size_t(triangle_source[k]);
@@ -219,17 +219,13 @@ FlatGeometry<T> FlatGeometry<T>::refit(const Scene& moved, ThreadPool* pool) con
 
 template <typename T>
 SurfacePoint<T> FlatGeometry<T>::surface(const Ray<T>& ray, const Hit<T>& hit) const {
-    const int ns = int(spheres.size()), np = int(planes.size());
-    int prim = hit.index;
-    if (hit.kind == ShapeKind::plane) prim += ns;
-    if (hit.kind == ShapeKind::triangle) prim += ns + np;
     const RayPacket<T> packet = RayPacket<T>::splat(ray);
     Vec3Lanes<T> point, normal, shading;
-    project(prim, packet.at(splat(hit.t)), point, normal, shading);
+    project(hit.prim, packet.at(splat(hit.t)), point, normal, shading);
     const LaneInts<T> flip = dot(normal, packet.direction) > T(0);
     normal = select(flip, -normal, normal);
     shading = select(flip, -shading, shading);
-    return {point.lane(0), normal.lane(0), shading.lane(0), surfaces[size_t(prim)].material};
+    return {point.lane(0), normal.lane(0), shading.lane(0), surfaces[size_t(hit.prim)].material};
 }
 
 template struct FlatGeometry<float>;

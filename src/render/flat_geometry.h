@@ -11,8 +11,10 @@
 #include <vector>
 
 #include "core/hit.h"
+#include "geometry/shapes.h"
 #include "geometry/triangle_block.h"
 #include "render/bvh_traversal.h"
+#include "render/primitive_ids.h"
 #include "scene/scene.h"
 
 namespace fh {
@@ -20,8 +22,7 @@ namespace fh {
 class ThreadPool;
 
 // The bounded primitives a tile's camera rays can hit (render/tile_culling.h),
-// as indices into the BVH's input (spheres, then triangles), in increasing
-// order. A short list is tested one by one, which for a few primitives is
+// by id (render/primitive_ids.h), in increasing order. A short list is tested one by one, which for a few primitives is
 // faster than walking the BVH; past kMaxSubset the walk is used instead.
 struct PrimitiveSubset {
     std::vector<int> prims;
@@ -29,8 +30,7 @@ struct PrimitiveSubset {
 };
 inline constexpr size_t kMaxSubset = 16;
 
-// Primitive ids number the spheres, then the planes, then the (kept) triangles.
-inline constexpr int kNoHit = -1;
+inline constexpr int kNoHit = -1;  // no primitive id
 
 // A padded sphere around all of a small scene's triangles (FlatGeometry::
 // few_triangles). A ray that misses it skips them all, with no division and
@@ -81,53 +81,6 @@ struct SmoothTriangle {
     }
 };
 
-// Where a primitive's surface is.
-template <typename T>
-struct PrimitiveSurface {
-    bool sphere = false;  // else flat: a plane or a triangle
-    Vec3<T> anchor{0};    // sphere: the centre; flat: a point on it
-    Vec3<T> normal{0};    // flat: the unit normal
-    T radius = 0;         // sphere
-    int material = -1;
-    int smooth = -1;      // a smooth triangle: its index in FlatGeometry::smooth_triangles
-
-    // For points p on the surface (up to the rounding of a ray's travel): p
-    // projected back onto it -- its error is then a few ulps of its own
-    // coordinates, not of the ray's travel -- and the unit geometric normal
-    // there (facing outward, not yet the ray).
-    FH_HOT_INLINE void project(const Vec3Lanes<T>& p, Vec3Lanes<T>& point,
-                               Vec3Lanes<T>& unit_normal) const {
-        if (sphere) {
-            unit_normal = normalize(p - anchor);
-            point = anchor + radius * unit_normal;
-        } else {
-            unit_normal = Vec3Lanes<T>::splat(normal);
-            point = p - dot(normal, p - anchor) * normal;
-        }
-    }
-
-    // One point (tests): the same formula with p in every lane.
-    void project(const Vec3<T>& p, Vec3<T>& point, Vec3<T>& unit_normal) const {
-        Vec3Lanes<T> q, n;
-        project(Vec3Lanes<T>::splat(p), q, n);
-        point = q.lane(0);
-        unit_normal = n.lane(0);
-    }
-};
-
-template <typename T>
-PrimitiveSurface<T> surface_of(const Sphere<T>& s) {
-    return {true, s.center, Vec3<T>(0), s.radius, s.material};
-}
-template <typename T>
-PrimitiveSurface<T> surface_of(const Plane<T>& p) {
-    return {false, p.distance * p.normal, p.normal, T(0), p.material};
-}
-template <typename T>
-PrimitiveSurface<T> surface_of(const Triangle<T>& t) {
-    return {false, t.v0, t.normal, T(0), t.material};
-}
-
 // The normal turned to face the ray (report 8.4).
 template <typename T>
 FH_HOT_INLINE Vec3Lanes<T> facing(const Vec3Lanes<T>& normal, const Vec3Lanes<T>& direction) {
@@ -145,21 +98,21 @@ struct SurfacePoint {
 
 template <typename T>
 struct FlatGeometry {
-    std::vector<Sphere<T>> spheres;
+    BoundedShapes<T> shapes;
     std::vector<Plane<T>> planes;
     BigArray<Triangle<T>> triangles;
-    // Over the spheres and triangles: index i < spheres.size() is sphere i,
-    // any other is triangle i - spheres.size().
+    PrimitiveIds ids;  // of shapes, planes and triangles, in that order
+    // Over every primitive but the planes, by id.
     Bvh bvh;
     BigArray<WalkNode<T>> walk_nodes;  // bvh.nodes as the walk reads them
     // The triangles of the leaves that hold only triangles, a block a leaf
     // (in double; float packs them in packed_rows below).
     BigArray<TriangleBlock<T>> blocks;
-    // At most kMaxSubset spheres and triangles: no BVH walk, every sphere
+    // At most kMaxSubset shapes and triangles: no BVH walk, every shape
     // tested, the triangles behind one bounding sphere, all in id order.
     bool small = false;
     BoundingSphere<T> few_triangles;
-    // A small scene's every sphere and triangle, as a list in id order
+    // A small scene's every shape and triangle, as a list in id order
     // (render/packet_intersect.h tests it one by one); larger: walk_bvh.
     PrimitiveSubset everything;
     BigArray<PrimitiveSurface<T>> surfaces;  // by primitive id
@@ -187,16 +140,19 @@ struct FlatGeometry {
     // lost its area -- the geometry is built anew instead.
     FlatGeometry refit(const Scene& moved, ThreadPool* pool = nullptr) const;
 
-    // A leaf's packed rows (kPackedRows; n: a run of triangles, n.a >= 0).
+    // A leaf's packed rows (kPackedRows; n: a run of triangles).
     FH_HOT_INLINE TriangleRows<T> packed_rows_of(const WalkNode<T>& n) const {
-        return {&packed_rows[9 * size_t(n.a)], n.count()};
+        return {&packed_rows[9 * size_t(n.first_triangle())], n.count()};
     }
 
-    Hit<T> hit_of(T t, int prim) const {
-        const int ns = int(spheres.size()), np = int(planes.size());
-        if (prim < ns) return {t, ShapeKind::sphere, prim};
-        if (prim < ns + np) return {t, ShapeKind::plane, prim - ns};
-        return {t, ShapeKind::triangle, prim - ns - np};
+    const std::vector<Sphere<T>>& spheres() const { return shapes.template of<Sphere>(); }
+
+    // Each ray's t on primitive `id`, a shape or a triangle (not a plane).
+    FH_HOT_INLINE Lanes<T> intersect(int id, const RayBasis<T>& basis, T t_min, const Lanes<T>& t_max) const {
+        if (ids.is_triangle(id)) return triangles[size_t(ids.triangle_index(id))].intersect(basis, t_min, t_max);
+        return shapes.visit(size_t(id), [&](const auto& s) FH_HOT_LAMBDA {
+            return s.intersect(basis.ray, t_min, t_max);
+        });
     }
 
     // For the lanes of points p on primitive `prim`: the projected point, its

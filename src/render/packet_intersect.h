@@ -35,17 +35,15 @@ struct HitLanes {
 template <typename T, typename Limit, typename Take, typename TakeOne>
 FH_HOT_INLINE bool test_leaf(const FlatGeometry<T>& geometry, const RayBasis<T>& basis, const WalkNode<T>& n,
                              const LaneInts<T>& entering, Limit&& limit, Take&& take, TakeOne&& take_one) {
-    const int spheres = int(geometry.spheres.size());
-    const int first_triangle = spheres + int(geometry.planes.size());  // triangle 0's primitive id
     // A run of triangles: the same lines twice, on float's packed rows and
     // on double's blocks. Written once (a generic lambda taking either), the
     // float frames were 1-2.5% slower in 7 of 9 measurements (1,280 and
     // 1.3M triangles, the bunny; 3 interleaved rounds), double within noise;
     // written out, double's machine code is what it was before packed rows.
-    if (n.a >= 0) {
+    if (n.triangle_run()) {
+        const int id = geometry.ids.triangle(n.first_triangle());
         if constexpr (FlatGeometry<T>::kPackedRows) {
             const TriangleRows<T> block = geometry.packed_rows_of(n);
-            const int id = first_triangle + n.a;
             if (count(entering) < n.count())
                 return for_each_lane(entering, [&](int lane) FH_HOT_LAMBDA {
                     for (int j0 = 0; j0 < n.count(); j0 += kLanes<T>) {
@@ -59,7 +57,6 @@ FH_HOT_INLINE bool test_leaf(const FlatGeometry<T>& geometry, const RayBasis<T>&
             return false;
         } else {
             const TriangleBlock<T>& block = geometry.blocks[size_t(n.block())];
-            const int id = first_triangle + n.a;
             if (count(entering) < n.count())
                 return for_each_lane(entering, [&](int lane) FH_HOT_LAMBDA {
                     for (int j0 = 0; j0 < n.count(); j0 += kLanes<T>) {
@@ -73,12 +70,9 @@ FH_HOT_INLINE bool test_leaf(const FlatGeometry<T>& geometry, const RayBasis<T>&
             return false;
         }
     }
-    for (int k = ~n.a; k < ~n.a + n.count(); ++k) {
-        const int i = geometry.bvh.prims[size_t(k)];
-        if (i < spheres ? take(geometry.spheres[size_t(i)].intersect(basis.ray, T(0), limit()), i)
-                        : take(geometry.triangles[size_t(i - spheres)].intersect(basis, T(0), limit()),
-                               first_triangle + i - spheres))
-            return true;
+    for (int k = n.first_listed(); k < n.first_listed() + n.count(); ++k) {
+        const int id = geometry.bvh.prims[size_t(k)];
+        if (take(geometry.intersect(id, basis, T(0), limit()), id)) return true;
     }
     return false;
 }
@@ -90,7 +84,7 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const Ra
                                          const LaneInts<T>& active, const PrimitiveSubset* subset = nullptr) {
     HitLanes<T> h{select(active, splat(kInfinity<T>), splat(T(0))), LaneInts<T>{} + kNoHit};
     // On a tie the lower primitive id wins, whatever order the BVH visits
-    // them in: spheres before planes before triangles, triangles in the flat
+    // them in: shapes before planes before triangles (render/primitive_ids.h), triangles in the flat
     // scene's order (the file's for small scenes, the leaves' for others).
     // So each BVH test looks a little past the nearest hit so far (`reach`),
     // and keep decides.
@@ -100,7 +94,8 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const Ra
         h.prim = select(nearer, LaneInts<T>{} + id, h.prim);
     };
     auto reach = [&h]() FH_HOT_LAMBDA { return h.t * (T(1) + std::numeric_limits<T>::epsilon()); };
-    const int spheres = int(geometry.spheres.size()), planes = int(geometry.planes.size());
+    const PrimitiveIds& ids = geometry.ids;
+    const int planes = int(geometry.planes.size());
     std::optional<RayBasis<T>> basis;  // built once a triangle is reached
     // A short list (a tile's, or a small scene's every primitive) is tested
     // one by one in increasing id order, so the first of equal hits is kept.
@@ -108,16 +103,18 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const Ra
     if (!listed.walk_bvh) {
         const std::vector<int>& list = listed.prims;
         size_t k = 0;
-        for (; k < list.size() && list[k] < spheres; ++k)
-            keep(geometry.spheres[size_t(list[k])].intersect(ray, T(0), h.t), list[k]);
-        for (int p = 0; p < planes; ++p) keep(geometry.planes[size_t(p)].intersect(ray, T(0), h.t), spheres + p);
+        for (; k < list.size() && ids.is_shape(list[k]); ++k)
+            keep(geometry.shapes.visit(size_t(list[k]), [&](const auto& s) FH_HOT_LAMBDA {
+                return s.intersect(ray, T(0), h.t);
+            }), list[k]);
+        for (int p = 0; p < planes; ++p) keep(geometry.planes[size_t(p)].intersect(ray, T(0), h.t), ids.plane(p));
         if (k == list.size() || (geometry.small && none(geometry.few_triangles.reaches(ray) & (h.t > T(0))))) return h;
         const RayBasis<T> triangle_basis(ray);
         for (; k < list.size(); ++k)
-            keep(geometry.triangles[size_t(list[k] - spheres)].intersect(triangle_basis, T(0), h.t), planes + list[k]);
+            keep(geometry.triangles[size_t(ids.triangle_index(list[k]))].intersect(triangle_basis, T(0), h.t), list[k]);
         return h;
     }
-    for (int p = 0; p < planes; ++p) keep(geometry.planes[size_t(p)].intersect(ray, T(0), reach()), spheres + p);
+    for (int p = 0; p < planes; ++p) keep(geometry.planes[size_t(p)].intersect(ray, T(0), reach()), ids.plane(p));
     // One ray's hits on a block's columns: the nearest, the first of equal
     // ones, goes through keep in that ray's lane alone (infinity, the others).
     auto keep_one = [&](int lane, const Lanes<T>& t, int id) FH_HOT_LAMBDA {
@@ -169,7 +166,7 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& geometry, const RayPac
     };
     for (const Plane<T>& p : geometry.planes)
         if (block(p.intersect(ray, T(0), limit))) return blocked;
-    const int spheres = int(geometry.spheres.size());
+    const PrimitiveIds& ids = geometry.ids;
     std::optional<RayBasis<T>> basis;  // built once a leaf is reached
     auto leaf = [&](const WalkNode<T>& n, const LaneInts<T>& entering) FH_HOT_LAMBDA {
         if (!basis) basis.emplace(ray);
@@ -186,15 +183,18 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& geometry, const RayPac
                 return all(blocked | ~active);
             });
     };
-    if (!geometry.everything.walk_bvh) {  // a small scene: every sphere, the triangles behind their bound
+    if (!geometry.everything.walk_bvh) {  // a small scene: every shape, the triangles behind their bound
         const std::vector<int>& list = geometry.everything.prims;
         size_t k = 0;
-        for (; k < list.size() && list[k] < spheres; ++k)
-            if (block(geometry.spheres[size_t(list[k])].intersect(ray, T(0), limit))) return blocked;
+        for (; k < list.size() && ids.is_shape(list[k]); ++k)
+            if (block(geometry.shapes.visit(size_t(list[k]), [&](const auto& s) FH_HOT_LAMBDA {
+                    return s.intersect(ray, T(0), limit);
+                })))
+                return blocked;
         if (k == list.size() || none(geometry.few_triangles.reaches(ray) & (limit > T(0)))) return blocked;
         const RayBasis<T> triangle_basis(ray);
         for (; k < list.size(); ++k)
-            if (block(geometry.triangles[size_t(list[k] - spheres)].intersect(triangle_basis, T(0), limit)))
+            if (block(geometry.triangles[size_t(ids.triangle_index(list[k]))].intersect(triangle_basis, T(0), limit)))
                 return blocked;
         return blocked;
     }
@@ -207,7 +207,7 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& geometry, const RayPac
 template <typename T>
 Hit<T> closest_hit(const FlatGeometry<T>& geometry, const Ray<T>& ray) {
     const HitLanes<T> h = closest_hits(geometry, RayPacket<T>::splat(ray), first_lanes<T>(1));
-    return h.prim[0] == kNoHit ? Hit<T>{} : geometry.hit_of(h.t[0], int(h.prim[0]));
+    return h.prim[0] == kNoHit ? Hit<T>{} : Hit<T>{h.t[0], int(h.prim[0])};
 }
 
 }  // namespace fh

@@ -93,13 +93,26 @@ TileFrustum TileSides::frustum(int x0, int x1, int y0, int y1) const {
             rows_[size_t(line(y0, height_))], flipped(rows_[size_t(line(y1, height_))])};
 }
 
+namespace {
+
+// Primitive `id` (a shape or a triangle) may be hit by a ray of the frustum.
+template <typename T>
+bool may_hit(const FlatGeometry<T>& geometry, const TileFrustum& frustum, int id) {
+    if (geometry.ids.is_triangle(id)) {
+        const Triangle<T>& t = geometry.triangles[size_t(geometry.ids.triangle_index(id))];
+        return frustum.may_hit(dvec3(t.v0), dvec3(t.v1), dvec3(t.v2));
+    }
+    return geometry.shapes.visit(size_t(id), [&](const auto& s) { return frustum.may_hit(s); });
+}
+
+}  // namespace
+
 template <typename T>
 void cull_to_frustum(const FlatGeometry<T>& geometry, const TileFrustum& frustum, PrimitiveSubset& out) {
     out.prims.clear();
     out.walk_bvh = false;
     const Bvh& bvh = geometry.bvh;
     if (bvh.empty()) return;
-    const int spheres = int(geometry.spheres.size());
     auto give_up = [&out] {  // too many to list: walk the BVH
         out.prims.clear();
         out.walk_bvh = true;
@@ -121,18 +134,10 @@ void cull_to_frustum(const FlatGeometry<T>& geometry, const TileFrustum& frustum
             continue;
         }
         for (int k = n.first; k < n.first + n.count; ++k) {
-            const int i = bvh.prims[size_t(k)];
-            bool may = false;
-            if (i < spheres) {
-                const Sphere<T>& s = geometry.spheres[size_t(i)];
-                may = frustum.may_hit(dvec3(s.center), double(s.radius));
-            } else {
-                const Triangle<T>& t = geometry.triangles[size_t(i - spheres)];
-                may = frustum.may_hit(dvec3(t.v0), dvec3(t.v1), dvec3(t.v2));
-            }
-            if (!may) continue;
+            const int id = bvh.prims[size_t(k)];
+            if (!may_hit(geometry, frustum, id)) continue;
             if (out.prims.size() == kMaxSubset) return give_up();
-            out.prims.push_back(i);
+            out.prims.push_back(id);
         }
     }
     std::sort(out.prims.begin(), out.prims.end());

@@ -34,6 +34,14 @@ public:
 
     // False only if no ray of the frustum can meet the sphere.
     bool may_hit(const dvec3& center, double radius) const;
+    template <typename T>
+    bool may_hit(const Sphere<T>& s) const { return may_hit(dvec3(s.center), double(s.radius)); }
+    // Any other bounded shape: by its box.
+    template <typename Shape>
+    bool may_hit(const Shape& s) const {
+        const Aabb b = s.bounds();
+        return overlap(b.lo, b.hi) != Overlap::outside;
+    }
     // False only if no ray of the frustum can meet the triangle.
     bool may_hit(const dvec3& a, const dvec3& b, const dvec3& c) const;
 
@@ -64,7 +72,7 @@ private:
     std::vector<FrustumSide> columns_, rows_;  // facing increasing x, y
 };
 
-// The spheres and triangles of `geometry` the frustum may hit, into `out`: found
+// The shapes and triangles of `geometry` the frustum may hit, by id, into `out`: found
 // by walking the BVH with the frustum; more than kMaxSubset of them and
 // `out` says to walk the BVH per packet instead.
 template <typename T>

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "geometry/plane.h"
-#include "geometry/sphere.h"
+#include "geometry/shapes.h"
 #include "geometry/triangle.h"
 #include "scene/camera.h"
 #include "scene/lights.h"
@@ -35,7 +35,7 @@ struct NamedSurface {
 struct Scene {
     std::vector<std::string> material_names;  // parallel to materials
     std::vector<Material<double>> materials;
-    std::vector<Sphere<double>> spheres;
+    BoundedShapes<double> shapes;  // spheres and any other bounded shape (geometry/shapes.h)
     std::vector<Plane<double>> planes;
     std::vector<Triangle<double>> triangles;
     // Empty, or one per triangle: the vertex normals smooth shading
@@ -48,6 +48,9 @@ struct Scene {
     std::vector<NamedSurface> named_surfaces;
     int meshes = 0;                        // mesh files read into `triangles`
     size_t degenerate_mesh_triangles = 0;  // their zero-area triangles, left out
+
+    std::vector<Sphere<double>>& spheres() { return shapes.of<Sphere>(); }
+    const std::vector<Sphere<double>>& spheres() const { return shapes.of<Sphere>(); }
 
     const Camera* find_camera(const std::string& name) const {
         for (const Camera& c : cameras)

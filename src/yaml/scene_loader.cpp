@@ -175,8 +175,8 @@ void read_surface(const YamlReader& r, const YAML::Node& node, Scene& scene) {
         named.name = surface_name(m, scene);
         const dvec3 center = m.vec3("center");
         const double radius = m.positive("radius");
-        named.index = scene.spheres.size();
-        scene.spheres.push_back({center, radius, material_index(m, scene)});
+        named.index = scene.spheres().size();
+        scene.spheres().push_back({center, radius, material_index(m, scene)});
     } else {
         const MapReader m(r, node, "plane", {"type", "name", "normal", "distance", "material"});
         named.name = surface_name(m, scene);

@@ -173,7 +173,7 @@ TEST(Animate, FollowingAndAimingAtMovingThings) {
     scene_at(m, 1, s);
     EXPECT_NEAR(s.spot_lights[0].axis.x, std::sqrt(0.5), 1e-15);
     EXPECT_NEAR(s.spot_lights[0].axis.z, -std::sqrt(0.5), 1e-15);
-    EXPECT_EQ(s.spheres[0].center, dvec3(1, 0, 0));
+    EXPECT_EQ(s.spheres()[0].center, dvec3(1, 0, 0));
 }
 
 TEST(Animate, TheEffectPlanFollowsTheLightsPerFrame) {

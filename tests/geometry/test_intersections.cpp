@@ -8,7 +8,7 @@
 #include "geometry/plane.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
-#include "render/flat_scene.h"  // surface_of: the hit point as shading finds it
+#include "render/flat_scene.h"  // Shape::surface: the hit point as shading finds it
 
 namespace fh {
 namespace {
@@ -37,7 +37,7 @@ TYPED_TEST(Intersections, SphereFrontHitAndNormal) {
     const T t = red.intersect(r, 0, kInfinity<T>);
     EXPECT_NEAR(t, 9, 1e-5);  // top of the sphere at z = 1
     Vec3<T> p, n;
-    surface_of(red).project(r.at(t), p, n);
+    red.surface().project(r.at(t), p, n);
     EXPECT_NEAR(p.z, 1, 1e-6);
     EXPECT_NEAR(n.x, 0, 1e-6);
     EXPECT_NEAR(n.z, 1, 1e-6);
@@ -52,7 +52,7 @@ TYPED_TEST(Intersections, SphereObliqueHit) {
     const auto r = ray<T>({h, 0, 5}, {0, 0, -1});
     EXPECT_NEAR(s.intersect(r, 0, kInfinity<T>), 5 - h, 1e-5);
     Vec3<T> p, n;
-    surface_of(s).project(r.at(5 - h), p, n);
+    s.surface().project(r.at(5 - h), p, n);
     EXPECT_NEAR(n.x, h, 1e-5);
     EXPECT_NEAR(n.z, h, 1e-5);
 }
@@ -111,7 +111,7 @@ TYPED_TEST(Intersections, PlaneHitsFromAboveAndBelow) {
     EXPECT_NEAR(floor.intersect(ray<T>({0, 0, 1}, {1, 0, -1}), 0, kInfinity<T>), 2 * std::sqrt(2.0),
                 1e-5);
     Vec3<T> p, n;
-    surface_of(floor).project(ray<T>({3, 4, 10}, {0, 0, -1}).at(11), p, n);
+    floor.surface().project(ray<T>({3, 4, 10}, {0, 0, -1}).at(11), p, n);
     EXPECT_EQ(p.z, T(-1));
     EXPECT_EQ(n, Vec3<T>(0, 0, 1));
 }

@@ -23,7 +23,7 @@ Scene edge_scene() {
     m.diffuse = 0.8;
     s.materials = {m};
     s.material_names = {"blue"};
-    s.spheres.push_back({{0, 0, 0}, 6, 0});
+    s.spheres().push_back({{0, 0, 0}, 6, 0});
     s.ambient_lights.push_back({"ambient", {255, 255, 255}, 0.01});
     s.directional_lights.push_back({"sun", {255, 255, 255}, 0.01, glm::normalize(dvec3(-1, 1, -1))});
     Camera c;

@@ -33,7 +33,7 @@ Scene soup(int triangles, int spheres, unsigned seed) {
         const dvec3 a = point(), d = size(rng) * glm::normalize(point()), e = size(rng) * glm::normalize(point());
         s.triangles.push_back(Triangle<double>::make(a, a + d, a + e, 0));
     }
-    for (int i = 0; i < spheres; ++i) s.spheres.push_back({point(), size(rng) * 0.5, 0});
+    for (int i = 0; i < spheres; ++i) s.spheres().push_back({point(), size(rng) * 0.5, 0});
     return s;
 }
 
@@ -48,9 +48,9 @@ HitLanes<T> brute_force_hits(const FlatGeometry<T>& f, const RayPacket<T>& ray, 
         h.prim = select(nearer, LaneInts<T>{} + id, h.prim);
     };
     const RayBasis<T> basis(ray);
-    const int ns = int(f.spheres.size()), np = int(f.planes.size());
+    const int ns = int(f.spheres().size()), np = int(f.planes.size());
     for (int i = 0; i < ns; ++i)
-        keep(f.spheres[size_t(i)].intersect(ray, T(0), h.t * (T(1) + std::numeric_limits<T>::epsilon())), i);
+        keep(f.spheres()[size_t(i)].intersect(ray, T(0), h.t * (T(1) + std::numeric_limits<T>::epsilon())), i);
     for (int i = 0; i < np; ++i)
         keep(f.planes[size_t(i)].intersect(ray, T(0), h.t * (T(1) + std::numeric_limits<T>::epsilon())), ns + i);
     for (int i = 0; i < int(f.triangles.size()); ++i)
@@ -65,7 +65,7 @@ LaneInts<T> brute_force_blocked(const FlatGeometry<T>& f, const RayPacket<T>& ra
     LaneInts<T> blocked{};
     const Lanes<T> limit = select(active, t_max, splat(T(0)));
     const RayBasis<T> basis(ray);
-    for (const auto& s : f.spheres) blocked |= s.intersect(ray, T(0), limit) < limit;
+    for (const auto& s : f.spheres()) blocked |= s.intersect(ray, T(0), limit) < limit;
     for (const auto& p : f.planes) blocked |= p.intersect(ray, T(0), limit) < limit;
     for (const auto& t : f.triangles) blocked |= t.intersect(basis, T(0), limit) < limit;
     return blocked & active;
@@ -143,7 +143,7 @@ TYPED_TEST(BvhAgainstBruteForce, RefitAfterMovingKeepsTheTreeAndTheHits) {
         const dvec3 d(std::sin(double(i)), std::cos(double(i)), 0.5);  // each its own way, up to ~1.5
         moved.triangles[i] = Triangle<double>::make(t.v0 + d, t.v1 + d, t.v2 + d, t.material);
     }
-    for (auto& sphere : moved.spheres) sphere.center = -sphere.center;
+    for (auto& sphere : moved.spheres()) sphere.center = -sphere.center;
     const auto built = FlatGeometry<T>::build(s);
     const auto f = built.refit(moved);
     ASSERT_EQ(f.bvh.nodes.size(), built.bvh.nodes.size());

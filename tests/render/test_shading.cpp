@@ -85,7 +85,7 @@ TEST(Shading, ShadowRayBlockedBySphereSkipsDiffuseAndSpecular) {
     Scene s = plane_scene();
     s.materials.push_back(plane_material());
     // A sphere between (0,0,-1) and the light (toward (1,-1,1)/sqrt3).
-    s.spheres.push_back({{2, -2, 1}, 0.5, 1});
+    s.spheres().push_back({{2, -2, 1}, 0.5, 1});
     RayCounts counts;
     expect_color(shade_from_above(s, only(true, true, true), &counts), 6.63, 6.63, 6.63, 1e-12);
     EXPECT_EQ(counts.shadow, 1u);

@@ -9,7 +9,7 @@
 #include "geometry/plane.h"
 #include "geometry/triangle.h"
 #include "robust_util.h"
-#include "render/flat_scene.h"  // surface_of: the hit point as shading finds it
+#include "render/flat_scene.h"  // Shape::surface: the hit point as shading finds it
 
 namespace fh {
 namespace {
@@ -76,7 +76,7 @@ TYPED_TEST(PlaneRobust, JustAboveTheParallelLimitIsFinite) {
     ASSERT_TRUE(std::isfinite(t));
     EXPECT_NEAR(double(t), 2 / c, 1e-4 * 2 / c);
     Vec3<T> p, n;
-    surface_of(floor).project(r.at(t), p, n);  // as shading finds the hit point
+    floor.surface().project(r.at(t), p, n);  // as shading finds the hit point
     EXPECT_TRUE(is_finite(p));
     EXPECT_EQ(p.z, T(-1));
 }

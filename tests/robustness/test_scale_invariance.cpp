@@ -39,7 +39,7 @@ const dvec3 kShift(1e4, 1e4, 1e4);
 dvec3 move(const dvec3& p) { return kScale * p + kShift; }
 
 Scene transformed(Scene s) {
-    for (auto& sp : s.spheres) {
+    for (auto& sp : s.spheres()) {
         sp.center = move(sp.center);
         sp.radius *= kScale;
     }

@@ -20,7 +20,7 @@
 #include "geometry/sphere.h"
 #include "robust_util.h"
 #include "scene/camera.h"
-#include "render/flat_scene.h"  // surface_of: the hit point as shading finds it
+#include "render/flat_scene.h"  // Shape::surface: the hit point as shading finds it
 
 namespace fh {
 namespace {
@@ -68,7 +68,7 @@ Scene scene(const Setup& st, bool plane, bool sphere, bool glazed) {
     Scene s;
     const int m = add_material(s, "m", material({200, 200, 200}, 0.001, 1, 0.5, 20, glazed, 0.5));
     if (plane) s.planes.push_back({kPlaneNormal, glm::dot(kPlaneNormal, st.shift), m});
-    if (sphere) s.spheres.push_back({st.shift + 1.5 * st.scale * kPlaneNormal, st.scale, m});
+    if (sphere) s.spheres().push_back({st.shift + 1.5 * st.scale * kPlaneNormal, st.scale, m});
     s.ambient_lights.push_back({"a", {255, 255, 255}, 1});
     s.directional_lights.push_back({"steep", {255, 255, 255}, 0.05, kSteep});
     s.directional_lights.push_back({"grazing", {255, 255, 255}, 0.05, kGrazing});
@@ -85,7 +85,7 @@ TYPED_TEST(SelfIntersection, NoRayFindsTheSurfaceItLeaves) {
     using T = TypeParam;
     for (const Setup& st : setups<T>()) {
         const Scene s = scene(st, true, true, true);
-        const Sphere<T> sphere{Vec3<T>(s.spheres[0].center), T(s.spheres[0].radius), 0};
+        const Sphere<T> sphere{Vec3<T>(s.spheres()[0].center), T(s.spheres()[0].radius), 0};
         const Plane<T> plane{Vec3<T>(s.planes[0].normal), T(s.planes[0].distance), 0};
         const CameraRays<T> rays(view(st));
         const Vec3<T> lights[2] = {-Vec3<T>(kSteep), -Vec3<T>(kGrazing)};
@@ -100,10 +100,10 @@ TYPED_TEST(SelfIntersection, NoRayFindsTheSurfaceItLeaves) {
                 // The hit point and normal as shading finds them.
                 Vec3<T> p, n;
                 if (on_sphere) {
-                    surface_of(sphere).project(ray.at(ts), p, n);
+                    sphere.surface().project(ray.at(ts), p, n);
                     ++sphere_pixels;
                 } else {
-                    surface_of(plane).project(ray.at(tp), p, n);
+                    plane.surface().project(ray.at(tp), p, n);
                     ++plane_pixels;
                 }
                 if (glm::dot(n, ray.direction) > T(0)) n = -n;

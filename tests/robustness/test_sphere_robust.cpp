@@ -231,8 +231,8 @@ TYPED_TEST(SphereRobust, RenderedFromInsideAndFromFar) {
     using T = TypeParam;
     Scene s;
     const int m = add_material(s, "m", material({200, 100, 50}, 0.5, 0.5, 1, 10, true, 0.5));
-    s.spheres.push_back({{0, 0, 0}, 5, m});
-    s.spheres.push_back({{1e6, 0, 0}, 1e3, m});
+    s.spheres().push_back({{0, 0, 0}, 5, m});
+    s.spheres().push_back({{1e6, 0, 0}, 1e3, m});
     s.ambient_lights.push_back({"a", {255, 255, 255}, 1});
     s.directional_lights.push_back({"d", {255, 255, 255}, 0.01, glm::normalize(dvec3(1, 1, -1))});
     s.spot_lights.push_back({"s", {255, 255, 255}, 10, {0, 0, 4.9}, {0, 0, -1}, 6.283185307179586});
@@ -246,7 +246,7 @@ TYPED_TEST(SphereRobust, RenderedFromInsideAndFromFar) {
     EXPECT_EQ(background, 0);
 
     Scene far = s;
-    far.spheres.erase(far.spheres.begin());
+    far.spheres().erase(far.spheres().begin());
     // Sphere of radius 1e3 at 1e6: 1e-3 rad; at projection distance 5e3 a disc
     // of radius 5 units on the 20-unit-high image plane, 16 of its 64 pixels.
     const auto r = render(far, camera(Projection::perspective, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}, 64, 5e3),

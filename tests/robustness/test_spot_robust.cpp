@@ -165,7 +165,7 @@ TYPED_TEST(SpotRobust, RenderedSpotsAreFinite) {
             Scene s;
             const int m = add_material(s, "m", material({130, 130, 130}, 0.1, 0.5, 10.5, 100, true, 0.05));
             s.planes.push_back({{0, 0, 1}, -1, m});
-            s.spheres.push_back({{-3, 0, 0}, 1, m});  // pos (-3,0,1) is on its top
+            s.spheres().push_back({{-3, 0, 0}, 1, m});  // pos (-3,0,1) is on its top
             s.triangles.push_back(Triangle<double>::make({-5, 5, 0}, {-7, 5, 0}, {-6, 6, 5}, m));
             s.spot_lights.push_back({"s", {255, 255, 255}, 2.2, pos, {0, 0, -1}, max_angle});
             const auto r = render(s, camera(Projection::perspective, {2, -10, 10}, {0, 2, -1}, {0, 0, 1}, 40),

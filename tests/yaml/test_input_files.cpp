@@ -180,7 +180,7 @@ TEST(InputFiles, FromStringEqualsFromFile) {
     const std::string content{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     const Scene b = load_scene_from_string(content, "scene.yaml").scene;
     EXPECT_EQ(a.material_names, b.material_names);
-    EXPECT_EQ(a.spheres.size(), b.spheres.size());
+    EXPECT_EQ(a.spheres().size(), b.spheres().size());
     EXPECT_EQ(a.cameras.size(), b.cameras.size());
     try {
         load_scene_from_string("cameras: {}\n", "in memory.yaml");

@@ -42,10 +42,10 @@ TEST(SceneLoader, LoadsTheReportScene) {
     EXPECT_DOUBLE_EQ(s.materials[1].reflectivity, 0);
     EXPECT_DOUBLE_EQ(s.materials[4].reflectivity, 0.6);
 
-    ASSERT_EQ(s.spheres.size(), 3u);
-    EXPECT_EQ(s.spheres[1].center, dvec3(-3, -3, 0.5));
-    EXPECT_DOUBLE_EQ(s.spheres[1].radius, 1.5);
-    EXPECT_EQ(s.spheres[1].material, 2);
+    ASSERT_EQ(s.spheres().size(), 3u);
+    EXPECT_EQ(s.spheres()[1].center, dvec3(-3, -3, 0.5));
+    EXPECT_DOUBLE_EQ(s.spheres()[1].radius, 1.5);
+    EXPECT_EQ(s.spheres()[1].material, 2);
     ASSERT_EQ(s.planes.size(), 1u);
     EXPECT_EQ(s.planes[0].normal, dvec3(0, 0, 1));
     EXPECT_DOUBLE_EQ(s.planes[0].distance, -1);
@@ -89,7 +89,7 @@ TEST(SceneLoader, DefaultsAndOptionalParts) {
     const SceneFile file = load_scene(write_temp_file("minimal.yaml", kCamera));
     const Scene& s = file.scene;
     EXPECT_TRUE(s.materials.empty());
-    EXPECT_TRUE(s.spheres.empty());
+    EXPECT_TRUE(s.spheres().empty());
     EXPECT_EQ(file.settings.samples_per_pixel, 1);
     EXPECT_EQ(file.settings.max_depth, 5);
     EXPECT_EQ(file.settings.precision, Precision::float64);

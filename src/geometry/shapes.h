@@ -1,0 +1,16 @@
+// The bounded shapes a scene can hold besides triangles (which the tracer
+// packs in blocks of its own) and planes (unbounded: never in a BVH). The
+// order here is their numbering's: on equal distances the shape listed
+// first wins. To add a shape: write it (geometry/sphere.h is the model),
+// list it here, and read it in the scene file (yaml/scene_loader.cpp).
+#pragma once
+
+#include "geometry/shape_list.h"
+#include "geometry/sphere.h"
+
+namespace fh {
+
+template <typename T>
+using BoundedShapes = ShapeArrays<T, ShapeList<Sphere>>;
+
+}  // namespace fh
