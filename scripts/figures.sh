@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The report's figure ladder (SPEC section 6): renders animations/figures/
+# The report's figure ladder (docs/model.md section 6): renders animations/figures/
 # figure1..6.yaml, times each with `firsthit bench` (median of 7 runs), and
 # writes what each effect costs: OUT/figureN.png, OUT/figures.md (a table of
 # effects, time and rays by kind) and OUT/figures_grid.png (all six, labelled).

@@ -1,4 +1,4 @@
-// Paths (report section 10, SPEC section 5): how one animated property (a
+// Paths (report section 10, docs/model.md section 5): how one animated property (a
 // 3-vector; a number or a flag travels in x) changes over a movie. Each value depends only on the global
 // frame index and the frame count, so any subset of frames equals the same
 // frames of a full run.

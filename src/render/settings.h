@@ -20,7 +20,7 @@ struct Limits {
     static constexpr int max_depth = 64;
 };
 
-// The effects of the report's shading (SPEC section 4).
+// The effects of the report's shading (docs/model.md section 4).
 struct Effects {
     bool ambient = true;
     bool diffuse = true;

@@ -1,4 +1,4 @@
-// Shading (report 8, SPEC section 4): the colour each ray of a packet brings back.
+// Shading (report 8, docs/model.md section 4): the colour each ray of a packet brings back.
 //   1. nearest hit; none -> the background
 //   2. ambient
 //   3-5. per directional or spot light, unless a shadow ray finds a blocker:

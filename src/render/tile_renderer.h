@@ -59,7 +59,7 @@ FH_HOT_INLINE auto interleave_rgb(const Bytes (&bytes)[3], std::index_sequence<K
     return pick_rgb<W>(rg, bb, std::make_index_sequence<4 * W>{});
 }
 
-// The clamped colour of each sample (SPEC section 4), lane by lane; a sample
+// The clamped colour of each sample (docs/model.md section 4), lane by lane; a sample
 // that came out NaN or infinite is counted and contributes black.
 template <typename T>
 FH_HOT_INLINE ColorLanes<T> clamp_samples(const ColorLanes<T>& c, const LaneInts<T>& active,

@@ -5,7 +5,7 @@
 //     x = -half_width + (2 half_width / width)(i + 1/2),  y = half_height - (2 half_height / height)(j + 1/2).
 // Orthographic: origin = view_point + x u + y v, direction = -w.
 // Perspective:  origin = view_point, direction = normalize(-d w + x u + y v).
-// (The report writes u y + v x, which transposes the image; SPEC fixes it.)
+// (The report writes u y + v x, which transposes the image; docs/deviations.md.)
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// Spot light (report 6.3), as SPEC section 4 reads it. For a point p with
+// Spot light (report 6.3), as docs/model.md section 4 reads it. For a point p with
 // L = normalize(pos - p), d = |pos - p| and theta the angle between the cone's
 // axis and the direction from the light to p:
 //     intensity = I * (1 - theta / max_angle) / d^2   for theta <= max_angle, else 0.

@@ -1,4 +1,4 @@
-// The movie file (docs: INTERFACE.md, "Movie file"): a scene, one of its
+// The movie file (docs/format.md): a scene, one of its
 // cameras, the lights switched on, the frame rate and length, camera paths, and
 // render settings and effects that override the scene's. Loading is as strict
 // as the scene's: every mistake is an fh::InputError with file, line and column.

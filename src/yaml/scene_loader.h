@@ -1,4 +1,4 @@
-// The scene file (docs: INTERFACE.md, "Scene file"): materials, surfaces,
+// The scene file (docs/format.md): materials, surfaces,
 // lights, cameras, and optional render settings and effects. Loading is strict:
 // unknown or repeated keys, values of the wrong type or out of range, names that
 // refer to nothing are all fh::InputError with the file, line and column.

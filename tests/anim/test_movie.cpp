@@ -1,4 +1,4 @@
-// Movies: frame count, per-frame cameras, the SPEC section 5 orbits and the
+// Movies: frame count, per-frame cameras, the docs/model.md section 5 orbits and the
 // pre-render camera check.
 #include <gtest/gtest.h>
 
@@ -19,7 +19,7 @@ void expect_vec_near(const dvec3& got, const dvec3& want, double tol = 1e-12) {
     EXPECT_NEAR(got.z, want.z, tol);
 }
 
-// SPEC section 5: a full orbit over 10 s at 30 fps, always looking at the origin.
+// docs/model.md section 5: a full orbit over 10 s at 30 fps, always looking at the origin.
 Movie spec_movie(double center_y, double center_z) {
     Movie m;
     m.fps = 30;

@@ -1,4 +1,4 @@
-// Camera paths: fixed values, orbits, toward, keyframes (SPEC section 5).
+// Camera paths: fixed values, orbits, toward, keyframes (docs/model.md section 5).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // The effect plan: exact ray counts on small scenes, pruning never changes a
-// byte, and each of the report's figures gets the plan SPEC section 6 gives it.
+// byte, and each of the report's figures gets the plan docs/model.md section 6 gives it.
 #include <gtest/gtest.h>
 
 #include "yaml/scene_loader.h"
@@ -107,7 +107,7 @@ TEST(EffectPlan, PruningNeverChangesAByte) {
     }
 }
 
-// SPEC section 6, and SPEC section 4 for which rays each effect needs.
+// docs/model.md section 6, and docs/model.md section 4 for which rays each effect needs.
 TEST(EffectPlan, EachFigureGetsThePlanSpecGivesIt) {
     const char* expected[] = {
         "ambient",

@@ -1,5 +1,5 @@
-// Whole frames of the report's scene: the worked pixel values of SPEC
-// section 7 (from an independent implementation, +-1 per channel), and the
+// Whole frames of the report's scene: the worked pixel values of
+// docs/model.md section 7 (from an independent implementation, +-1 per channel), and the
 // same bytes for any thread count.
 #include <gtest/gtest.h>
 
@@ -33,7 +33,7 @@ void expect_pixels(const Image& img, const std::vector<Pixel>& pixels) {
     }
 }
 
-// Movie cameras at frame 0 (SPEC section 5): phi = 0.
+// Movie cameras at frame 0 (docs/model.md section 5): phi = 0.
 Camera movie_camera(Projection p, dvec3 view_point) {
     Camera c;
     c.projection = p;

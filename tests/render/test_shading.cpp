@@ -1,4 +1,4 @@
-// Each shading term at a hand-worked point (SPEC section 4): the report's
+// Each shading term at a hand-worked point (docs/model.md section 4): the report's
 // plane (colour 130, ambient 0.1, diffuse 0.5, specular 10.5, exponent 100,
 // glazed 0.05) under the report's lights.
 #include <gtest/gtest.h>

@@ -41,7 +41,7 @@ Vec3<T> at_angle(const SpotLight<T>& s, double theta, double d) {
     return Vec3<T>(dvec3(s.position) + d * (std::cos(theta) * a + std::sin(theta) * side));
 }
 
-// Expected intensity from SPEC section 4.
+// Expected intensity from docs/model.md section 4.
 double expected(double I, double theta, double max_angle, double d) {
     return theta <= max_angle ? I * std::max(0.0, 1 - theta / max_angle) / (d * d) : 0;
 }

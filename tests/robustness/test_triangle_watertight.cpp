@@ -1,4 +1,4 @@
-// The closed tetrahedron of the report (SPEC section 2)
+// The closed tetrahedron of the report (docs/model.md section 2)
 // is watertight -- rays aimed from outside exactly at its edges and vertices
 // all enter it through a face that faces them -- and degenerate triangles
 // (no area, collinear, a repeated vertex) never hit and never give NaN.

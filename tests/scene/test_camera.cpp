@@ -1,5 +1,5 @@
 // Camera basis and the rays of corner and centre pixels of both cameras
-// (report Table 6), against values worked out from SPEC section 3.
+// (report Table 6), against values worked out from docs/model.md section 3.
 #include <gtest/gtest.h>
 
 #include <cmath>

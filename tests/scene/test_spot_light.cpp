@@ -1,4 +1,4 @@
-// The spot light's falloff as SPEC section 4 reads it.
+// The spot light's falloff as docs/model.md section 4 reads it.
 #include <gtest/gtest.h>
 
 #include <cmath>
