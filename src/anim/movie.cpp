@@ -112,10 +112,28 @@ bool Movie::scene_changes() const {
     return false;
 }
 
-bool Movie::shapes_move() const {
-    for (const Animation& a : animations)
-        if (moves_shapes(a.target.property)) return true;
-    return false;
+ShapeChanges Movie::shape_changes() const {
+    ShapeChanges changes;
+    // What a surface moves; a group moves what it holds, at any depth.
+    auto mark = [&](const NamedSurface& s) {
+        const bool placed = s.kind == SurfaceKind::instance || s.kind == SurfaceKind::instances;
+        if (s.kind != SurfaceKind::group) (placed ? changes.instances : changes.world) = true;
+    };
+    for (const Animation& a : animations) {
+        if (!moves_shapes(a.target.property)) continue;
+        const NamedSurface& s = scene.named_surfaces[a.target.index];
+        if (s.kind != SurfaceKind::group) {
+            mark(s);
+            continue;
+        }
+        for (const NamedSurface& member : scene.named_surfaces)
+            for (int g = member.group; g >= 0; g = scene.groups[size_t(g)].parent)
+                if (size_t(g) == s.index) {
+                    mark(member);
+                    break;
+                }
+    }
+    return changes;
 }
 
 dvec3 value_at(const Movie& movie, const Target& t, int frame) {
@@ -140,12 +158,28 @@ Camera camera_at(const Movie& movie, int frame) {
 void scene_at(const Movie& movie, int frame, Scene& scene) {
     Camera unused;
     std::set<size_t> placed;  // surfaces whose transform moves
+    bool groups_move = false;  // something in a group, or a group, moves
     for (const Animation& a : movie.animations) {
         if (is_camera(a.target.property)) continue;
+        const bool surface = moves_shapes(a.target.property);
+        if (surface && scene.named_surfaces[a.target.index].group >= 0) groups_move = true;
         if (is_transform(a.target.property)) placed.insert(a.target.index);
         else set_value(a.target, value_at(movie, a.target, frame), scene, unused);
     }
-    for (const size_t s : placed) place_surface(scene, scene.named_surfaces[s], transform_at(movie, s, frame));
+    for (const size_t s : placed) {
+        NamedSurface& named = scene.named_surfaces[s];
+        named.transform = transform_at(movie, s, frame);
+        if (named.kind == SurfaceKind::group) {
+            scene.groups[named.index].transform = named.transform;
+            groups_move = true;
+        } else if (named.group < 0) {
+            if (named.kind == SurfaceKind::triangle || named.kind == SurfaceKind::mesh)
+                place_surface(scene, named, named.transform);
+            else
+                place_surface(scene, named, glm::dmat4(1.0));
+        }
+    }
+    if (groups_move) place_groups(scene);
 }
 
 std::vector<int> check_animations(const Movie& movie) {

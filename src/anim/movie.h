@@ -12,6 +12,7 @@
 
 #include "anim/path.h"
 #include "anim/property.h"
+#include "render/prepared_scene.h"
 #include "render/settings.h"
 #include "scene/scene.h"
 
@@ -40,8 +41,9 @@ struct Movie {
     void animate_camera(Property property, Path path);
     // Some animated property belongs to the scene (not only the camera).
     bool scene_changes() const;
-    // Some animated property moves a surface: its BVH is refitted per frame.
-    bool shapes_move() const;
+    // What the animated properties move: the world's own primitives (their
+    // BVH is refitted per frame), instances (their top BVH), or nothing.
+    ShapeChanges shape_changes() const;
 };
 
 // The value of a target at frame i: its path's, or the file's when no path

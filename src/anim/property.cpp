@@ -82,10 +82,11 @@ dvec3 value_of(const Target& t, const Scene& scene, const Camera& camera) {
         if (t.light == LightKind::directional) return scene.directional_lights[t.index].direction;
         return scene.spot_lights[t.index].axis;
     case Property::light_max_angle: return dvec3(scene.spot_lights[t.index].max_angle);
-    case Property::sphere_center: return scene.spheres()[s->index].center;
-    case Property::sphere_radius: return dvec3(scene.spheres()[s->index].radius);
-    case Property::plane_normal: return scene.planes[s->index].normal;
-    case Property::plane_distance: return dvec3(scene.planes[s->index].distance);
+    // In a group, a sphere's or plane's values are in the group's space.
+    case Property::sphere_center: return (s->group < 0 ? scene.spheres()[s->index] : s->local_sphere).center;
+    case Property::sphere_radius: return dvec3((s->group < 0 ? scene.spheres()[s->index] : s->local_sphere).radius);
+    case Property::plane_normal: return (s->group < 0 ? scene.planes[s->index] : s->local_plane).normal;
+    case Property::plane_distance: return dvec3((s->group < 0 ? scene.planes[s->index] : s->local_plane).distance);
     case Property::transform_translate: return s->transform.translate;
     case Property::transform_scale: return s->transform.scale;
     case Property::transform_axis: return s->transform.axis;
@@ -111,7 +112,10 @@ void set_value(const Target& t, const dvec3& v, Scene& scene, Camera& camera) {
         else write(scene.spot_lights[t.index]);
     };
     Material<double>* m = t.index < scene.materials.size() ? &scene.materials[t.index] : nullptr;
-    const NamedSurface* s = t.index < scene.named_surfaces.size() ? &scene.named_surfaces[t.index] : nullptr;
+    NamedSurface* s = t.index < scene.named_surfaces.size() ? &scene.named_surfaces[t.index] : nullptr;
+    // In a group: the group's-space value, which place_groups carries to the world.
+    auto sphere = [&]() -> Sphere<double>& { return s->group < 0 ? scene.spheres()[s->index] : s->local_sphere; };
+    auto plane = [&]() -> Plane<double>& { return s->group < 0 ? scene.planes[s->index] : s->local_plane; };
     switch (t.property) {
     case Property::camera_view_point: camera.view_point = v; break;
     case Property::camera_look_at: camera.look_at = v; break;
@@ -126,10 +130,10 @@ void set_value(const Target& t, const dvec3& v, Scene& scene, Camera& camera) {
         else scene.spot_lights[t.index].axis = unit_or_zero(v);
         break;
     case Property::light_max_angle: scene.spot_lights[t.index].max_angle = v.x; break;
-    case Property::sphere_center: scene.spheres()[s->index].center = v; break;
-    case Property::sphere_radius: scene.spheres()[s->index].radius = v.x; break;
-    case Property::plane_normal: scene.planes[s->index].normal = unit_or_zero(v); break;
-    case Property::plane_distance: scene.planes[s->index].distance = v.x; break;
+    case Property::sphere_center: sphere().center = v; break;
+    case Property::sphere_radius: sphere().radius = v.x; break;
+    case Property::plane_normal: plane().normal = unit_or_zero(v); break;
+    case Property::plane_distance: plane().distance = v.x; break;
     case Property::material_color: m->ambient_color = m->diffuse_color = m->specular_color = v; break;
     case Property::material_ambient_color: m->ambient_color = v; break;
     case Property::material_diffuse_color: m->diffuse_color = v; break;
@@ -151,7 +155,7 @@ std::string check_value(const Target& t, const dvec3& v) {
     case ValueKind::unit_interval: return v.x >= 0 && v.x <= 1 ? "" : "it must be in 0..1";
     case ValueKind::direction: return max_abs_component(v) > 0 ? "" : "a direction must not be zero";
     case ValueKind::color: return v.x >= 0 && v.y >= 0 && v.z >= 0 ? "" : "a colour must be >= 0";
-    case ValueKind::scale: return v.x > 0 && v.y > 0 && v.z > 0 ? "" : "a scale must be > 0";
+    case ValueKind::scale: return v.x != 0 && v.y != 0 && v.z != 0 ? "" : "a scale must not be 0";
     default: return "";
     }
 }

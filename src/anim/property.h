@@ -29,7 +29,7 @@ enum class ValueKind {
     point,         // any finite vector
     direction,     // a non-zero vector
     color,         // each component >= 0 (0..255 in the file)
-    scale,         // a number (all three axes) or a vector, each > 0
+    scale,         // a number (all three axes) or a vector, each non-zero (negative: a mirror)
     flag,          // true or false: always a step
 };
 

@@ -19,7 +19,7 @@ void print_scene(const Scene& s, const RenderSettings& settings) {
               << "spheres: " << s.spheres().size() << "\n"
               << "planes: " << s.planes.size() << "\n"
               << "triangles: " << s.triangles.size() << "\n"
-              << "meshes: " << s.meshes << "\n"
+              << "meshes: " << s.mesh_files << "\n"
               << "degenerate_triangles_dropped: " << s.degenerate_mesh_triangles << "\n"
               << "lights:";
     for (const auto& l : s.ambient_lights) std::cout << " " << l.name << (l.on ? "" : "(off)");

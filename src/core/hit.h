@@ -9,7 +9,8 @@ namespace fh {
 template <typename T>
 struct Hit {
     T t = kInfinity<T>;
-    int prim = -1;  // its primitive id; -1: none
+    int prim = -1;      // its primitive id (in its instance's mesh, if any); -1: none
+    int instance = -1;  // its instance, or -1: one of the world's own primitives
 
     bool found() const { return prim >= 0; }
 };

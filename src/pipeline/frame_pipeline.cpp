@@ -61,7 +61,8 @@ FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, 
     // refits a copy (PreparedScene::for_frame).
     const PreparedScene prepared(movie.scene, settings, &pool);
     summary.prepare_ms = prepared.build_ms();
-    const bool scene_changes = movie.scene_changes(), shapes_move = movie.shapes_move();
+    const bool scene_changes = movie.scene_changes();
+    const ShapeChanges shapes_move = movie.shape_changes();
     // Each worker's own copy of the scene, set to its frame's values.
     std::vector<std::optional<Scene>> worker_scenes(size_t(pool.size()));
     std::mutex counts_mutex;

@@ -21,14 +21,17 @@ LightTerms<T> terms(const Material<double>& m, const dvec3& light_color, double 
 
 template <typename T>
 FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan, ThreadPool* pool) {
-    return build(scene, plan, std::make_shared<const FlatGeometry<T>>(FlatGeometry<T>::build(scene, pool)));
+    return build(scene, plan, std::make_shared<const FlatGeometry<T>>(FlatGeometry<T>::build(scene, pool)),
+                 InstanceSet<T>::build(scene, pool));
 }
 
 template <typename T>
 FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
-                                 std::shared_ptr<const FlatGeometry<T>> geometry) {
+                                 std::shared_ptr<const FlatGeometry<T>> geometry,
+                                 std::shared_ptr<const InstanceSet<T>> instances) {
     FlatScene<T> f;
     f.geometry = std::move(geometry);
+    f.instances = std::move(instances);
     f.plan = plan;
     const Effects& fx = plan.effects;
 

@@ -9,6 +9,7 @@
 
 #include "render/effect_plan.h"
 #include "render/flat_geometry.h"
+#include "render/instance_set.h"
 
 namespace fh {
 
@@ -34,6 +35,8 @@ template <typename T>
 struct FlatScene {
     // Shared by every frame whose shapes do not move.
     std::shared_ptr<const FlatGeometry<T>> geometry;
+    // The scene's instances (nullptr: none); shared by every frame that moves none of them.
+    std::shared_ptr<const InstanceSet<T>> instances;
     std::vector<MaterialShading<T>> shading;    // by material
     std::vector<DirectionalLight<T>> directional_lights;
     std::vector<SpotLight<T>> spot_lights;
@@ -48,10 +51,11 @@ struct FlatScene {
     // Only what the plan simulates: lights it uses, terms of its effects.
     // pool: the BVH is built on it (nullptr: on the calling thread).
     static FlatScene build(const Scene& scene, const EffectPlan& plan, ThreadPool* pool = nullptr);
-    // The same over geometry already built from this scene's shapes (a
-    // frame of a movie): only lights and materials are flattened.
+    // The same over geometry and instances already built from this scene's
+    // shapes (a frame of a movie): only lights and materials are flattened.
     static FlatScene build(const Scene& scene, const EffectPlan& plan,
-                           std::shared_ptr<const FlatGeometry<T>> geometry);
+                           std::shared_ptr<const FlatGeometry<T>> geometry,
+                           std::shared_ptr<const InstanceSet<T>> instances);
 };
 
 extern template struct FlatScene<float>;

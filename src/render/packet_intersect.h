@@ -19,10 +19,13 @@
 
 namespace fh {
 
+inline constexpr int kNoInstance = -1;  // a hit on the world's own primitives
+
 template <typename T>
 struct HitLanes {
-    Lanes<T> t;           // the nearest hit's distance; 0 or infinity where none
-    LaneInts<T> prim;     // its primitive id, or kNoHit
+    Lanes<T> t;            // the nearest hit's distance; 0 or infinity where none
+    LaneInts<T> prim;      // its primitive id (in its instance's mesh, if any), or kNoHit
+    LaneInts<T> instance;  // its instance (render/instance_set.h), or kNoInstance
 };
 
 // The primitives of a leaf the walk reports, tested against the rays:
@@ -79,10 +82,13 @@ FH_HOT_INLINE bool test_leaf(const FlatGeometry<T>& geometry, const RayBasis<T>&
 
 // subset: what a tile's camera rays can hit (render/tile_culling.h), tested
 // one by one when it is short; nullptr or a long one: the BVH is walked.
+// t_max: each ray's farthest distance (hits at it or past it are not
+// found); 0 in the inactive lanes.
 template <typename T>
-FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const RayPacket<T>& ray,
-                                         const LaneInts<T>& active, const PrimitiveSubset* subset = nullptr) {
-    HitLanes<T> h{select(active, splat(kInfinity<T>), splat(T(0))), LaneInts<T>{} + kNoHit};
+FH_HOT_INLINE HitLanes<T> closest_hits_within(const FlatGeometry<T>& geometry, const RayPacket<T>& ray,
+                                              const LaneInts<T>& active, const Lanes<T>& t_max,
+                                              const PrimitiveSubset* subset = nullptr) {
+    HitLanes<T> h{t_max, LaneInts<T>{} + kNoHit, LaneInts<T>{} + kNoInstance};
     // On a tie the lower primitive id wins, whatever order the BVH visits
     // them in: shapes before planes before triangles (render/primitive_ids.h), triangles in the flat
     // scene's order (the file's for small scenes, the leaves' for others).
@@ -150,6 +156,12 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const Ra
 
     for_each_leaf(geometry.walk_nodes, ray, active, h.t, leaf);
     return h;
+}
+
+template <typename T>
+FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& geometry, const RayPacket<T>& ray,
+                                       const LaneInts<T>& active, const PrimitiveSubset* subset = nullptr) {
+    return closest_hits_within(geometry, ray, active, select(active, splat(kInfinity<T>), splat(T(0))), subset);
 }
 
 // Per lane: some surface lies in (0, t_max) along the ray. Stops as soon as

@@ -26,7 +26,7 @@ PreparedScene::PreparedScene(const Scene& scene, const RenderSettings& settings,
     build_ms_ = ms_since(start);
 }
 
-PreparedScene PreparedScene::for_frame(const Scene& frame, bool shapes_moved, ThreadPool* pool) const {
+PreparedScene PreparedScene::for_frame(const Scene& frame, ShapeChanges moved, ThreadPool* pool) const {
     const auto start = std::chrono::steady_clock::now();
     PreparedScene p;
     p.settings_ = settings_;
@@ -34,9 +34,11 @@ PreparedScene PreparedScene::for_frame(const Scene& frame, bool shapes_moved, Th
     auto next = [&](const auto& flat) {
         using Flat = std::decay_t<decltype(*flat)>;
         auto geometry = flat->geometry;
-        if (shapes_moved)
+        if (moved.world)
             geometry = std::make_shared<const typename decltype(geometry)::element_type>(geometry->refit(frame, pool));
-        return std::make_unique<Flat>(Flat::build(frame, plan, std::move(geometry)));
+        auto instances = flat->instances;
+        if (moved.instances && instances) instances = instances->moved(frame, pool);
+        return std::make_unique<Flat>(Flat::build(frame, plan, std::move(geometry), std::move(instances)));
     };
     if (float_) p.float_ = next(float_);
     else p.double_ = next(double_);
@@ -59,6 +61,15 @@ double PreparedScene::bvh_build_ms() const {
 }
 int PreparedScene::bvh_nodes() const {
     return int(float_ ? float_->geometry->bvh.nodes.size() : double_->geometry->bvh.nodes.size());
+}
+
+size_t PreparedScene::instances() const {
+    if (float_) return float_->instances ? float_->instances->instances.size() : 0;
+    return double_->instances ? double_->instances->instances.size() : 0;
+}
+double PreparedScene::instances_update_ms() const {
+    if (float_) return float_->instances ? float_->instances->update_ms : 0;
+    return double_->instances ? double_->instances->update_ms : 0;
 }
 
 FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,

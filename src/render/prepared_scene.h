@@ -3,7 +3,8 @@
 // once, for every frame that shares the scene's shapes. A movie whose camera
 // moves prepares once and renders 300 frames; a frame whose lights or
 // materials change re-flattens only those (for_frame), one whose shapes
-// move refits the BVH of a copy of the shapes instead of building it anew.
+// move refits the BVH of a copy of the shapes instead of building it anew,
+// and one whose instances move redoes only their matrices and top BVH.
 #pragma once
 
 #include <memory>
@@ -15,6 +16,12 @@ namespace fh {
 template <typename T>
 struct FlatScene;
 
+// What a frame moved, against the scene prepared.
+struct ShapeChanges {
+    bool world = false;      // spheres, planes or triangles: the world's BVH is refitted
+    bool instances = false;  // instances: their matrices and top BVH are redone
+};
+
 class PreparedScene {
 public:
     // pool: builds the BVH on it (nullptr: on the calling thread).
@@ -23,9 +30,10 @@ public:
 
     // The same scene at another state of its lights, materials and shapes
     // (a movie's frame: same primitives, other values). The effect plan is
-    // worked out for that state; the shapes are shared when `shapes_moved`
-    // is false, else refitted (render/flat_geometry.h). pool: for a rebuild.
-    PreparedScene for_frame(const Scene& frame, bool shapes_moved, ThreadPool* pool = nullptr) const;
+    // worked out for that state; what did not move is shared, the world's
+    // shapes that moved are refitted (render/flat_geometry.h), instances
+    // that moved placed anew (render/instance_set.h). pool: for a rebuild.
+    PreparedScene for_frame(const Scene& frame, ShapeChanges moved, ThreadPool* pool = nullptr) const;
     PreparedScene(PreparedScene&&) noexcept;
     PreparedScene& operator=(PreparedScene&&) noexcept;
 
@@ -43,6 +51,8 @@ public:
     double build_ms() const { return build_ms_; }  // flattening and the BVH (or its refit)
     double bvh_build_ms() const;                   // of which the BVH
     int bvh_nodes() const;
+    size_t instances() const;       // placed meshes (the second level)
+    double instances_update_ms() const;  // their matrices and top BVH, last built
 
 private:
     PreparedScene() = default;

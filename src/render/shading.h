@@ -31,7 +31,7 @@
 #include "core/offset.h"
 #include "render/background.h"
 #include "render/flat_scene.h"
-#include "render/packet_intersect.h"
+#include "render/instance_walk.h"
 #include "render/stats.h"
 
 namespace fh {
@@ -43,7 +43,8 @@ public:
     static constexpr bool kSpecularTerm = (F & kSpecular) != 0;
     static constexpr bool kReflections = (F & kGlazing) != 0;
 
-    explicit Shader(const FlatScene<T>& scene) : scene_(scene), geometry_(*scene.geometry) {}
+    explicit Shader(const FlatScene<T>& scene)
+        : scene_(scene), geometry_(*scene.geometry), instances_(scene.instances.get()) {}
 
     // The colour of each active ray of a packet (unclamped); 0 in the others.
     // first_hits: the primitives the rays' first hits can be on (a tile's
@@ -55,7 +56,7 @@ public:
         ColorLanes<T> colour = black;
         Lanes<T> weight = splat(T(1));
         for (int depth = 0;; ++depth) {
-            const HitLanes<T> h = closest_hits(geometry_, ray, active, depth == 0 ? first_hits : nullptr);
+            const HitLanes<T> h = closest_hits(geometry_, instances_, ray, active, depth == 0 ? first_hits : nullptr);
             const LaneInts<T> hit = h.prim != kNoHit;
             ColorLanes<T> local = select(active & ~hit, background(ray.direction), black);
             if (none(hit)) {
@@ -124,6 +125,42 @@ private:
         else dst = select(lanes, value, dst);
     }
 
+    // Calls fn(a, b, lanes, first) for each distinct pair (a, b) among the
+    // lanes in mask, as for_each_distinct does for one id.
+    template <typename Fn>
+    static FH_HOT_INLINE void for_each_distinct_pair(const LaneInts<T>& a, const LaneInts<T>& b, LaneInts<T> mask,
+                                                     Fn&& fn) {
+        auto next = [&](auto first) FH_HOT_LAMBDA {
+            int lane = 0;
+            while (mask[lane] == 0) ++lane;
+            const LaneInts<T> same = mask & (a == a[lane]) & (b == b[lane]);
+            fn(int(a[lane]), int(b[lane]), same, first);
+            mask &= ~same;
+        };
+        if (none(mask)) return;
+        next(std::true_type{});
+        while (any(mask)) next(std::false_type{});
+    }
+
+    // One hit's primitive as shading reads it: its point and normals, its
+    // material. An instance's primitive is projected in its mesh's space and
+    // carried back to the world (normals by the inverse transpose).
+    FH_HOT_INLINE int project(int instance, int prim, const Vec3Lanes<T>& p, Vec3Lanes<T>& point,
+                              Vec3Lanes<T>& normal, Vec3Lanes<T>& shading) const {
+        if (instance < 0) {
+            geometry_.project(prim, p, point, normal, shading);
+            return geometry_.surfaces[size_t(prim)].material;
+        }
+        const FlatInstance<T>& in = instances_->instances[size_t(instance)];
+        const FlatGeometry<T>& mesh = *instances_->meshes[size_t(in.mesh)];
+        mesh.project(prim, in.to_object.point(p), point, normal, shading);
+        const bool smooth = mesh.surfaces[size_t(prim)].smooth >= 0;
+        point = in.to_world.point(point);
+        normal = normalize(in.normal_to_world.vector(normal));
+        shading = smooth ? normalize(in.normal_to_world.vector(shading)) : normal;
+        return in.material;
+    }
+
     // Hit points, facing normals, secondary-ray origins, material terms; the
     // ambient term goes straight into local (lanes with a hit only).
     FH_HOT_INLINE void surfaces(const RayPacket<T>& ray, const HitLanes<T>& h,
@@ -132,19 +169,31 @@ private:
         const Vec3Lanes<T> p = ray.at(select(hit, h.t, zero));
         ColorLanes<T> ambient;
         Vec3Lanes<T> geometric;  // the face's normal: where secondary rays start
-        for_each_distinct(h.prim, hit, [&](int prim, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
-            Vec3Lanes<T> point, normal, shading;
-            geometry_.project(prim, p, point, normal, shading);
+        auto take = [&](const Vec3Lanes<T>& point, const Vec3Lanes<T>& normal, const Vec3Lanes<T>& shading,
+                        int material, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
             put(s.point, point, lanes, first);
             put(geometric, normal, lanes, first);
             put(s.normal, shading, lanes, first);
-            const int material = geometry_.surfaces[size_t(prim)].material;
             const MaterialShading<T>& m = scene_.shading[size_t(material)];
             put(ambient, Vec3Lanes<T>::splat(m.ambient), lanes, first);
             put(s.reflectivity, splat(m.reflectivity), lanes, first);
             put(s.glazed, m.glazed ? lanes : LaneInts<T>{}, lanes, first);
             put(s.material, LaneInts<T>{} + material, lanes, first);
-        });
+        };
+        if (!instances_) {
+            for_each_distinct(h.prim, hit, [&](int prim, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
+                Vec3Lanes<T> point, normal, shading;
+                geometry_.project(prim, p, point, normal, shading);
+                take(point, normal, shading, geometry_.surfaces[size_t(prim)].material, lanes, first);
+            });
+        } else {
+            for_each_distinct_pair(h.instance, h.prim, hit,
+                                   [&](int instance, int prim, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
+                                       Vec3Lanes<T> point, normal, shading;
+                                       const int material = project(instance, prim, p, point, normal, shading);
+                                       take(point, normal, shading, material, lanes, first);
+                                   });
+        }
         local += select(hit, ambient, Vec3Lanes<T>{zero, zero, zero});
         // Both normals turn with the face: a smooth normal stays on the
         // side of the face the ray came from.
@@ -183,7 +232,7 @@ private:
         if (none(lit)) return;
         if constexpr (kShadowRays) {
             counts.shadow += std::uint64_t(count(lit));
-            lit &= ~occluded(geometry_, {s.origin, light.to_light}, light.distance, lit);
+            lit &= ~occluded(geometry_, instances_, {s.origin, light.to_light}, light.distance, lit);
             if (none(lit)) return;
         }
         // Per material the lit points show: its colour terms with this light,
@@ -224,6 +273,7 @@ private:
 
     const FlatScene<T>& scene_;
     const FlatGeometry<T>& geometry_;
+    const InstanceSet<T>* instances_;  // nullptr: none
 };
 
 // Calls fn(shader) with the shader variant for the scene's effect plan.

@@ -11,11 +11,13 @@ glm::dmat4 Transform::matrix() const {
     return glm::scale(t, scale);
 }
 
-PlacedMesh place(const Mesh& mesh, const Transform& transform) {
-    const glm::dmat4 m = transform.matrix();
+PlacedMesh place(const Mesh& mesh, const Transform& transform) { return place(mesh, transform.matrix()); }
+
+PlacedMesh place(const Mesh& mesh, const glm::dmat4& m) {
+    const bool identity = m == glm::dmat4(1.0);
     std::vector<dvec3> p(mesh.positions.size());
     for (size_t i = 0; i < p.size(); ++i)
-        p[i] = transform.identity() ? mesh.positions[i] : dvec3(m * glm::dvec4(mesh.positions[i], 1.0));
+        p[i] = identity ? mesh.positions[i] : dvec3(m * glm::dvec4(mesh.positions[i], 1.0));
     PlacedMesh out;
     out.triangles.reserve(mesh.triangles.size());
     for (const auto& t : mesh.triangles)

@@ -47,5 +47,7 @@ struct PlacedMesh {
 // The mesh's triangles placed by `transform`. A triangle the transform
 // collapses (to within rounding) comes out degenerate (Triangle::make).
 PlacedMesh place(const Mesh& mesh, const Transform& transform);
+// The same by a matrix (a transform composed with its groups').
+PlacedMesh place(const Mesh& mesh, const glm::dmat4& to_world);
 
 }  // namespace fh

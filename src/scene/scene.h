@@ -13,6 +13,7 @@
 #include "geometry/shapes.h"
 #include "geometry/triangle.h"
 #include "scene/camera.h"
+#include "scene/instance.h"
 #include "scene/lights.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
@@ -20,16 +21,25 @@
 
 namespace fh {
 
-enum class SurfaceKind { sphere, plane, triangle, mesh };
+enum class SurfaceKind { sphere, plane, triangle, mesh, instance, instances, group };
 
-// A surface the file names (`name:`): what a movie addresses to animate it.
+// A surface the file names (`name:`), which a movie can address to animate
+// it, or any surface inside a group (name empty), which moves with it.
 struct NamedSurface {
     std::string name;
     SurfaceKind kind = SurfaceKind::sphere;
-    size_t index = 0;  // sphere, plane: into spheres or planes; triangle, mesh: its first triangle
-    size_t count = 1;  // triangle, mesh: its triangles (a mesh's that were kept on loading)
-    Transform transform;               // triangle, mesh: as the file gives it (a triangle: none)
+    // sphere, plane: into spheres or planes; triangle, mesh: its first
+    // triangle; instance, instances: its first instance; group: into groups.
+    size_t index = 0;
+    size_t count = 1;  // triangle, mesh, instances: its triangles (a mesh's kept on loading) or instances
+    Transform transform;               // triangle, mesh, instance(s), group: as the file gives it
     std::shared_ptr<const Mesh> mesh;  // triangle, mesh: in its own space
+    int group = -1;                    // the group it is in (-1: none); its values are in that group's space
+    // In its group's space (group >= 0): a sphere's or plane's own values;
+    // an `instances` set's rows (named or in a group), before its transform.
+    Sphere<double> local_sphere{};
+    Plane<double> local_plane{};
+    std::shared_ptr<const std::vector<glm::dmat4>> local_placements;
 };
 
 struct Scene {
@@ -46,7 +56,10 @@ struct Scene {
     std::vector<SpotLight<double>> spot_lights;
     std::vector<Camera> cameras;
     std::vector<NamedSurface> named_surfaces;
-    int meshes = 0;                        // mesh files read into `triangles`
+    std::vector<SceneMesh> meshes;   // the `meshes:` section, each file read once
+    std::vector<Instance> instances;  // of those meshes
+    std::vector<Group> groups;
+    int mesh_files = 0;                    // mesh files read (each once)
     size_t degenerate_mesh_triangles = 0;  // their zero-area triangles, left out
 
     std::vector<Sphere<double>>& spheres() { return shapes.of<Sphere>(); }
@@ -67,6 +80,15 @@ struct Scene {
 // A named triangle or mesh placed anew by `transform`: its triangles (and
 // vertex normals) in the scene replaced, one for one.
 void place_surface(Scene& scene, const NamedSurface& surface, const Transform& transform);
+
+// Any surface placed anew: `to_world` takes its own space (its group's, for
+// a sphere or plane; the one its transform starts from, for the others) to
+// the world, and its own transform (triangle, mesh, instance) follows.
+void place_surface(Scene& scene, const NamedSurface& surface, const glm::dmat4& to_world);
+
+// Every surface inside a group placed by the groups' transforms as they
+// stand (a movie's frame moved some).
+void place_groups(Scene& scene);
 
 // Switches on the named lights and off all others (a movie's `lights:` list).
 // Lights that are off stay in the scene, so a render that does not prune

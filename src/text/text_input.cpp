@@ -3,6 +3,7 @@
 #include "text/text_input.h"
 
 #include <cerrno>
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstring>
@@ -25,6 +26,11 @@ std::string hex_byte(unsigned char c) {
     return std::string("0x") + hex[c >> 4] + hex[c & 15];
 }
 
+InputError too_large(const std::string& file, std::size_t size, std::size_t max_bytes) {
+    return InputError(file, "file too large: " + std::to_string(size) + " bytes (the limit is " +
+                                std::to_string(max_bytes) + " bytes, " + std::to_string(max_bytes >> 20) + " MiB)");
+}
+
 }  // namespace
 
 std::size_t utf8_length(const std::string& text, std::size_t i) {
@@ -45,10 +51,8 @@ std::size_t utf8_length(const std::string& text, std::size_t i) {
     return 0;
 }
 
-void check_input_text(const std::string& file, const std::string& text) {
-    if (text.size() > kMaxInputBytes)
-        throw InputError(file, "file too large: " + std::to_string(text.size()) + " bytes (the limit is " +
-                                   std::to_string(kMaxInputBytes) + " bytes, 1 MiB)");
+void check_input_text(const std::string& file, const std::string& text, std::size_t max_bytes) {
+    if (text.size() > max_bytes) throw too_large(file, text.size(), max_bytes);
     int line = 1, column = 1;
     for (std::size_t i = 0; i < text.size();) {
         const auto c = static_cast<unsigned char>(text[i]);
@@ -71,7 +75,7 @@ void check_input_text(const std::string& file, const std::string& text) {
     }
 }
 
-std::string read_input_file(const std::string& path) {
+std::string read_input_file(const std::string& path, std::size_t max_bytes) {
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0)
         throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(errno)));
@@ -79,20 +83,24 @@ std::string read_input_file(const std::string& path) {
     // pipe may never end. Say why instead.
     if (S_ISDIR(st.st_mode)) throw InputError(path, "cannot read file: is a directory");
     if (!S_ISREG(st.st_mode)) throw InputError(path, "cannot read file: not a regular file");
-    if (static_cast<unsigned long long>(st.st_size) > kMaxInputBytes)
-        throw InputError(path, "file too large: " + std::to_string(st.st_size) + " bytes (the limit is " +
-                                   std::to_string(kMaxInputBytes) + " bytes, 1 MiB)");
+    if (static_cast<unsigned long long>(st.st_size) > max_bytes) throw too_large(path, std::size_t(st.st_size), max_bytes);
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(errno)));
-    // At most one byte past the limit, should the file have grown since.
-    std::string text(kMaxInputBytes + 1, '\0');
-    const std::size_t n = std::fread(text.data(), 1, text.size(), f);
+    // Until the end, or one byte past the limit should the file have grown since.
+    std::string text(std::min<std::size_t>(std::size_t(st.st_size), max_bytes) + 1, '\0');
+    std::size_t n = 0;
+    while (n < text.size()) {
+        const std::size_t got = std::fread(text.data() + n, 1, text.size() - n, f);
+        n += got;
+        if (got == 0 || n > max_bytes) break;
+        if (n == text.size() && text.size() <= max_bytes) text.resize(std::min(2 * text.size(), max_bytes + 1));
+    }
     const bool failed = std::ferror(f) != 0;
     const int read_errno = errno;
     std::fclose(f);
     if (failed) throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(read_errno)));
     text.resize(n);
-    check_input_text(path, text);
+    check_input_text(path, text, max_bytes);
     return text;
 }
 

@@ -15,10 +15,11 @@ inline constexpr std::size_t kMaxInputBytes = std::size_t(1) << 20;
 // folder, device or pipe) of at most kMaxInputBytes, and text: UTF-8 without
 // control characters other than tab, line feed and carriage return. Anything
 // else is an InputError naming the file (and the offending byte's position).
-std::string read_input_file(const std::string& path);
+// A larger file the format allows (a placements table) gives its own max_bytes.
+std::string read_input_file(const std::string& path, std::size_t max_bytes = kMaxInputBytes);
 
 // The same checks on text already in memory (`file` names it in errors).
-void check_input_text(const std::string& file, const std::string& text);
+void check_input_text(const std::string& file, const std::string& text, std::size_t max_bytes = kMaxInputBytes);
 
 // The length of the valid UTF-8 character at text[i], or 0 when the bytes
 // there are not one (overlong forms, surrogates and values past U+10FFFF are

@@ -8,7 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "yaml/map_reader.h"
-#include "meshes/mesh_loader.h"
+#include "yaml/surface_reader.h"
 
 namespace fh {
 
@@ -52,150 +52,6 @@ void read_materials(const YamlReader& r, const YAML::Node& node, Scene& scene) {
         scene.material_names.push_back(e.key);
         scene.materials.push_back(read_material(r, e.value, e.key));
     }
-}
-
-int material_index(const MapReader& m, const Scene& scene) {
-    const YAML::Node node = m.value("material");
-    const std::string name = m.reader().string(node, "material");
-    const auto& names = scene.material_names;
-    const auto it = std::find(names.begin(), names.end(), name);
-    if (it == names.end()) {
-        const std::string hint = closest_match(name, names);
-        m.reader().fail(node, "undefined material '" + name + "'" +
-                                  (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
-    }
-    return static_cast<int>(it - names.begin());
-}
-
-// The vertex normals stay in step with the triangles once a smooth mesh
-// has some: zeros (flat) for every other triangle.
-void add_triangles(Scene& scene, const PlacedMesh& placed) {
-    if (!placed.vertex_normals.empty() || !scene.vertex_normals.empty()) {
-        scene.vertex_normals.resize(scene.triangles.size());
-        if (placed.vertex_normals.empty()) scene.vertex_normals.resize(scene.triangles.size() + placed.triangles.size());
-        else scene.vertex_normals.insert(scene.vertex_normals.end(), placed.vertex_normals.begin(), placed.vertex_normals.end());
-    }
-    scene.triangles.insert(scene.triangles.end(), placed.triangles.begin(), placed.triangles.end());
-}
-
-// A triangle as a mesh of one, so that a movie can move it like a mesh.
-Mesh read_triangle(const MapReader& m, int material) {
-    const YAML::Node v = m.value("vertices");
-    const YamlReader& r = m.reader();
-    if (!v.IsSequence() || v.size() != 3) r.fail(v, "expected a list of 3 points for 'vertices'");
-    // A zero-area triangle is accepted: it has a zero normal and never hits.
-    Mesh mesh;
-    mesh.positions = {r.vec3(v[0], "vertices"), r.vec3(v[1], "vertices"), r.vec3(v[2], "vertices")};
-    mesh.triangles = {{0, 1, 2}};
-    mesh.material = material;
-    return mesh;
-}
-
-// A mesh's `transform` (scene/mesh.h): p -> translate + rotate(scale * p),
-// in that order (scale first, about the origin; then the rotation about
-// `axis` through the origin, right-handed, by `degrees` or `radians`; then
-// the move).
-Transform read_transform(const YamlReader& r, const YAML::Node& node) {
-    const MapReader m(r, node, "'transform'", {"scale", "rotate", "translate"});
-    Transform t;
-    if (m.has("translate")) t.translate = m.vec3("translate");
-    if (const MapReader::Entry* rot = m.find("rotate")) {
-        const MapReader q(r, rot->value, "'rotate'", {"axis", "degrees", "radians"});
-        if (q.has("degrees") == q.has("radians"))
-            r.fail(rot->value, "'rotate' needs an angle: 'degrees' or 'radians' (one of them)");
-        t.radians = q.has("degrees") ? glm::radians(q.number("degrees")) : q.number("radians");
-        t.axis = q.direction("axis");
-    }
-    if (const MapReader::Entry* sc = m.find("scale")) {
-        t.scale = sc->value.IsSequence() ? m.vec3("scale") : dvec3(m.positive("scale"));
-        if (!(t.scale.x > 0 && t.scale.y > 0 && t.scale.z > 0))
-            r.fail(sc->value, "'scale' must be greater than 0 (a number, or one per axis)");
-    }
-    return t;
-}
-
-// A mesh file (meshes/mesh_loader.h), its path relative to the scene file's
-// folder. The file's own errors name the mesh file. Triangles the transform
-// collapses to zero area are dropped (and counted) like the file's own.
-Mesh read_mesh(const MapReader& m, int material, const Transform& transform, Scene& scene, PlacedMesh& placed) {
-    const YamlReader& r = m.reader();
-    const YAML::Node file = m.value("file");
-    const std::filesystem::path path = std::filesystem::path(r.file()).parent_path() / r.string(file, "file");
-    MeshData data = load_mesh(path.string());
-    Mesh mesh{std::move(data.positions), std::move(data.normals), std::move(data.triangles), material,
-              m.boolean_or("smooth", false)};
-    placed = place(mesh, transform);
-    size_t kept = 0;
-    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
-        if (placed.triangles[i].degenerate()) continue;
-        mesh.triangles[kept] = mesh.triangles[i];
-        placed.triangles[kept] = placed.triangles[i];
-        if (mesh.smooth) placed.vertex_normals[kept] = placed.vertex_normals[i];
-        ++kept;
-    }
-    scene.degenerate_mesh_triangles += data.degenerate_dropped + (mesh.triangles.size() - kept);
-    mesh.triangles.resize(kept);
-    placed.triangles.resize(kept);
-    if (mesh.smooth) placed.vertex_normals.resize(kept);
-    ++scene.meshes;
-    return mesh;
-}
-
-// The name of a surface: unique among the surfaces.
-std::string surface_name(const MapReader& m, const Scene& scene) {
-    if (!m.has("name")) return "";
-    const std::string name = m.reader().string(m.value("name"), "name");
-    if (name.empty()) m.reader().fail(m.value("name"), "a surface's 'name' must not be empty");
-    if (scene.find_surface(name)) m.reader().fail(m.value("name"), "a second surface named '" + name + "'");
-    return name;
-}
-
-void read_surface(const YamlReader& r, const YAML::Node& node, Scene& scene) {
-    // The type decides which keys are allowed, so it is read first.
-    const MapReader any(r, node, "surface", {});
-    const int type = r.choice(any.value("type"), "surface type", {"sphere", "plane", "triangle", "mesh"});
-    NamedSurface named;
-    if (type == 2 || type == 3) {
-        const MapReader m = type == 3
-            ? MapReader(r, node, "mesh", {"type", "name", "file", "material", "transform", "smooth"})
-            : MapReader(r, node, "triangle", {"type", "name", "vertices", "material"});
-        named.name = surface_name(m, scene);
-        named.kind = type == 3 ? SurfaceKind::mesh : SurfaceKind::triangle;
-        const int material = material_index(m, scene);
-        if (type == 3 && m.has("transform")) named.transform = read_transform(r, m.value("transform"));
-        PlacedMesh placed;
-        Mesh mesh = type == 3 ? read_mesh(m, material, named.transform, scene, placed) : read_triangle(m, material);
-        if (type == 2) placed = place(mesh, named.transform);
-        named.index = scene.triangles.size();
-        named.count = placed.triangles.size();
-        add_triangles(scene, placed);
-        named.mesh = std::make_shared<const Mesh>(std::move(mesh));
-    } else if (type == 0) {
-        const MapReader m(r, node, "sphere", {"type", "name", "center", "radius", "material"});
-        named.name = surface_name(m, scene);
-        const dvec3 center = m.vec3("center");
-        const double radius = m.positive("radius");
-        named.index = scene.spheres().size();
-        scene.spheres().push_back({center, radius, material_index(m, scene)});
-    } else {
-        const MapReader m(r, node, "plane", {"type", "name", "normal", "distance", "material"});
-        named.name = surface_name(m, scene);
-        named.kind = SurfaceKind::plane;
-        const dvec3 normal = m.direction("normal");
-        const double distance = m.number("distance");
-        // n.x = d and (n/s).x = d/s are the same plane: scale both alike.
-        const double scale = max_abs_component(normal);
-        const double length = glm::length(normal / scale);
-        named.index = scene.planes.size();
-        scene.planes.push_back({unit_or_zero(normal), distance / scale / length, material_index(m, scene)});
-    }
-    if (!named.name.empty()) scene.named_surfaces.push_back(std::move(named));
-}
-
-void read_surfaces(const YamlReader& r, const YAML::Node& node, Scene& scene) {
-    if (node.IsNull()) return;
-    r.expect_list(node, "'surfaces'");
-    for (const YAML::Node& surface : node) read_surface(r, surface, scene);
 }
 
 void read_light(const YamlReader& r, const MapReader::Entry& entry, Scene& scene) {
@@ -329,11 +185,12 @@ SceneFile load_scene_text(const std::string* text, const std::string& path) {
     try {
         const YamlReader r(path);
         const MapReader top(r, text ? r.parse_map(*text, "scene") : r.load_map("scene"), "scene",
-                            {"materials", "surfaces", "lights", "cameras", "render", "effects"});
+                            {"materials", "meshes", "surfaces", "lights", "cameras", "render", "effects"});
         SceneFile file;
         Scene& scene = file.scene;
         // Materials first, whatever the file's order: surfaces refer to them.
         read_materials(r, block(top, "materials"), scene);
+        read_meshes(r, block(top, "meshes"), scene);
         read_surfaces(r, block(top, "surfaces"), scene);
         if (!scene.vertex_normals.empty()) scene.vertex_normals.resize(scene.triangles.size());
         read_lights(r, block(top, "lights"), scene);

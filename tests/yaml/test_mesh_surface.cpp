@@ -55,7 +55,7 @@ TEST(MeshSurface, ScaledThenRotatedThenMovedByHand) {
     expect_near(s.triangles[0].v2, {1, 2, 5});
     // The face normal of the transformed triangle: (v1 - v0) x (v2 - v0), unit.
     expect_near(s.triangles[0].normal, glm::normalize(glm::cross(dvec3(-2, -2, 0), dvec3(0, -2, 2))));
-    EXPECT_EQ(s.meshes, 1);
+    EXPECT_EQ(s.mesh_files, 1);
     EXPECT_EQ(s.degenerate_mesh_triangles, 1u);
 }
 
@@ -83,7 +83,7 @@ TEST(MeshSurface, MistakesAreOneLineNamingTheirFile) {
     EXPECT_EQ(scene_error(kHead + "surfaces:\n" + mesh + "file: meshes/tri.off, transform: {rotate: {axis: [0, 0, 1]}}}\n"),
               "FILE:7:76: error: 'rotate' needs an angle: 'degrees' or 'radians' (one of them)");
     EXPECT_EQ(scene_error(kHead + "surfaces:\n" + mesh + "file: meshes/tri.off, transform: {scale: 0}}\n"),
-              "FILE:7:75: error: 'scale' must be > 0, got 0");
+              "FILE:7:75: error: 'scale' must not be 0 (a number, or one per axis; a negative one mirrors)");
     EXPECT_EQ(scene_error(kHead + "surfaces:\n" + mesh + "file: meshes/tri.off, transform: {shear: 1}}\n"),
               "FILE:7:68: error: unknown key 'shear' in 'transform'");
     EXPECT_EQ(scene_error(kHead + "surfaces:\n" + mesh + "name: a, file: meshes/tri.off}\n" +

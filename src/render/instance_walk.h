@@ -1,0 +1,93 @@
+// Packets through the two levels: the world's own primitives first
+// (render/packet_intersect.h), then the instances the packet's rays reach
+// in the top BVH, each entered by its inverse transform and walked with the
+// same packet code in its mesh's space (render/instance_set.h). Ties go to
+// the world's primitives, then to the lower instance, then to the lower
+// primitive id within it, whatever order the walk finds them in.
+#pragma once
+
+#include <limits>
+
+#include "render/instance_set.h"
+#include "render/packet_intersect.h"
+
+namespace fh {
+
+// How far past the nearest hit so far an instance's mesh is searched: its
+// distances are world ones times `scale` and back, two roundings each way.
+template <typename T>
+inline constexpr T kInstanceReach = T(1) + 4 * std::numeric_limits<T>::epsilon();
+
+// Hits on the set's instances nearer than h's, merged into h.
+template <typename T>
+FH_HOT_INLINE void closest_instance_hits(const InstanceSet<T>& set, const RayPacket<T>& ray,
+                                         const LaneInts<T>& active, HitLanes<T>& h) {
+    for_each_leaf(set.walk_nodes, ray, active, h.t, [&](const WalkNode<T>& n, const LaneInts<T>& entering) FH_HOT_LAMBDA {
+        for (int k = n.first_listed(); k < n.first_listed() + n.count(); ++k) {
+            const int i = set.bvh.prims[size_t(k)];
+            const FlatInstance<T>& instance = set.instances[size_t(i)];
+            Lanes<T> scale;
+            const RayPacket<T> local = instance.enter(ray, scale);
+            const Lanes<T> limit = select(entering, h.t * scale * kInstanceReach<T>, splat(T(0)));
+            const HitLanes<T> m = closest_hits_within(*set.meshes[size_t(instance.mesh)], local, entering, limit);
+            const Lanes<T> t = m.t / scale;
+            const LaneInts<T> tie = (t == h.t) & ((h.instance > i) | ((h.instance == i) & (h.prim > m.prim)));
+            const LaneInts<T> nearer = (m.prim != kNoHit) & ((t < h.t) | tie);
+            h.t = select(nearer, t, h.t);
+            h.prim = select(nearer, m.prim, h.prim);
+            h.instance = select(nearer, LaneInts<T>{} + i, h.instance);
+        }
+        return false;
+    });
+}
+
+// Per lane: some instance's surface lies in (0, t_max); t_max is 0 in the
+// lanes to skip.
+template <typename T>
+FH_HOT_INLINE LaneInts<T> occluded_by_instances(const InstanceSet<T>& set, const RayPacket<T>& ray,
+                                                Lanes<T> t_max, const LaneInts<T>& active) {
+    LaneInts<T> blocked = LaneInts<T>{};
+    for_each_leaf(set.walk_nodes, ray, active, t_max, [&](const WalkNode<T>& n, const LaneInts<T>& entering) FH_HOT_LAMBDA {
+        for (int k = n.first_listed(); k < n.first_listed() + n.count(); ++k) {
+            const FlatInstance<T>& instance = set.instances[size_t(set.bvh.prims[size_t(k)])];
+            Lanes<T> scale;
+            const RayPacket<T> local = instance.enter(ray, scale);
+            const LaneInts<T> asking = entering & (t_max > T(0));
+            blocked |= occluded(*set.meshes[size_t(instance.mesh)], local, t_max * scale, asking);
+            t_max = select(blocked, splat(T(0)), t_max);
+            if (all(blocked | ~active)) return true;
+        }
+        return false;
+    });
+    return blocked;
+}
+
+// Both levels: the nearest hit of each active ray.
+template <typename T>
+FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& world, const InstanceSet<T>* instances,
+                                       const RayPacket<T>& ray, const LaneInts<T>& active,
+                                       const PrimitiveSubset* subset = nullptr) {
+    HitLanes<T> h = closest_hits(world, ray, active, subset);
+    if (instances) closest_instance_hits(*instances, ray, active, h);
+    return h;
+}
+
+// Both levels: whether anything lies in (0, t_max) along each active ray.
+template <typename T>
+FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& world, const InstanceSet<T>* instances,
+                                   const RayPacket<T>& ray, const Lanes<T>& t_max, const LaneInts<T>& active) {
+    LaneInts<T> blocked = occluded(world, ray, t_max, active);
+    if (!instances || all(blocked | ~active)) return blocked;
+    return blocked | occluded_by_instances(*instances, ray, select(blocked | ~active, splat(T(0)), t_max),
+                                           active & ~blocked);
+}
+
+// The nearest hit of one ray on both levels (tests, the viewer).
+template <typename T>
+Hit<T> closest_hit(const FlatGeometry<T>& world, const InstanceSet<T>* instances, const Ray<T>& ray) {
+    const HitLanes<T> h = closest_hits(world, instances, RayPacket<T>::splat(ray), first_lanes<T>(1));
+    if (h.prim[0] == kNoHit) return {};
+    return {h.t[0], int(h.prim[0]), int(h.instance[0])};
+}
+
+}  // namespace fh

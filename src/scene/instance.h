@@ -1,0 +1,45 @@
+// Many objects: a mesh loaded once and placed many times (instances), and
+// groups that carry what they hold under one transform. An instance's
+// triangles stay in the mesh's own space; the tracer brings rays to them
+// (render/instance_set.h), so a thousand copies cost a thousand matrices,
+// not a thousand copies of the triangles.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <glm/mat4x4.hpp>
+
+#include "scene/mesh.h"
+
+namespace fh {
+
+// A `meshes:` entry: one file, read once, in its own space.
+struct SceneMesh {
+    std::string name;
+    std::shared_ptr<const Mesh> mesh;  // material unused: each instance gives its own
+};
+
+// One placement of a SceneMesh.
+struct Instance {
+    int mesh = 0;      // into Scene::meshes
+    int material = 0;  // into Scene::materials
+    glm::dmat4 to_world{1.0};  // object space -> world; invertible (the loaders check)
+};
+
+// A `type: group`: what it holds moves with its transform.
+struct Group {
+    std::string name;
+    Transform transform;  // in its parent's space
+    int parent = -1;      // the group it is in; -1: the world
+};
+
+// The world matrix of every group, parents before children (a group's
+// parent always comes first): world[g] = world[parent] * transform.
+std::vector<glm::dmat4> group_matrices(const std::vector<Group>& groups);
+
+// Why `m` cannot place anything -- not finite, or singular (no inverse in
+// double) -- or empty when it can.
+std::string unusable_transform(const glm::dmat4& m);
+
+}  // namespace fh

@@ -1,0 +1,29 @@
+// A placements table (`type: instances`, docs/format.md): one instance of a
+// mesh per row of a CSV file, so a forest of 100,000 trees needs no
+// 100,000-line YAML. A header row names the columns: tx, ty, tz (required),
+// scale (uniform, not 0), axis_x, axis_y, axis_z and degrees (a rotation, all
+// four or none), in any order; each row is scale, then rotate, then
+// translate, as a surface's `transform`. Every mistake is an InputError at
+// its line and column.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "scene/mesh.h"
+
+namespace fh {
+
+// A placements file may hold this many rows: each instance costs the
+// tracer ~250 bytes (its matrices in double and in the tracer's type, its
+// box, its share of the top-level BVH), so 4 million take ~1 GB.
+inline constexpr std::size_t kMaxInstances = 4'000'000;
+// ...and be this large: 4 million rows of ten columns with room to spare.
+inline constexpr std::size_t kMaxPlacementsBytes = std::size_t(256) << 20;
+
+std::vector<Transform> load_placements(const std::string& path);
+// The same from text in memory (`file` names it in errors; tests).
+std::vector<Transform> parse_placements(const std::string& text, const std::string& file);
+
+}  // namespace fh

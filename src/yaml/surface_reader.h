@@ -1,0 +1,29 @@
+// A scene file's `meshes:` and `surfaces:` (docs/format.md): every surface
+// type, placed in the world -- spheres, planes, triangles and `type: mesh`
+// as world-space primitives, `instance` and `instances` as placements of a
+// mesh loaded once, `group` as a transform over what it holds. Strict like
+// the rest of the scene file: every mistake is an InputError at its key.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include "scene/scene.h"
+#include "yaml/yaml_reader.h"
+
+namespace fh {
+
+class MapReader;
+
+// The `meshes:` map: each file read once, in its own space.
+void read_meshes(const YamlReader& reader, const YAML::Node& node, Scene& scene);
+
+// The `surfaces:` list, after the materials and meshes.
+void read_surfaces(const YamlReader& reader, const YAML::Node& node, Scene& scene);
+
+// A `transform:` map (scene/mesh.h): scale, then rotate, then translate.
+Transform read_transform(const YamlReader& reader, const YAML::Node& node);
+
+// The index of the material a surface's `material:` names.
+int material_index(const MapReader& map, const Scene& scene);
+
+}  // namespace fh
