@@ -33,15 +33,19 @@
 // to stderr too. firsthit_bench_scaling traces in double unless given
 // --precision float; this traces in float, as Embree does.
 //   firsthit_embree_reference [--threads N] [--runs K] [--max-level K] [--png OUT.png]
-//                             [--bunny FILE.off] [--width 4|8|16] [--verbose]
+//                             [--bunny FILE.off] [--placements FILE.csv] [--width 4|8|16] [--verbose]
 // --png writes the bunny's frame (the last icosphere's without the bunny);
 // --bunny: default animations/meshes/bunny00.off of this source tree (bash
 // scripts/fetch_meshes.sh fetches it); missing, the bunny row is left out.
+// --placements FILE.csv: instead, only the instancing benchmark's scene
+// (scripts/bunny_grid.sh): the bunny placed by each row, as Embree
+// instances (RTC_GEOMETRY_TYPE_INSTANCE) over one mesh scene.
 #include <embree3/rtcore.h>
 #include <pmmintrin.h>
 #include <xmmintrin.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -59,12 +63,15 @@
 #include <thread>
 #include <vector>
 
+#include <glm/gtc/matrix_access.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/icosphere.h"
 #include "meshes/mesh_loader.h"
 #include "images/png_writer.h"
 #include "render/image.h"
+#include "yaml/placements.h"
 
 #ifndef FIRSTHIT_SOURCE_DIR
 #define FIRSTHIT_SOURCE_DIR "."
@@ -103,6 +110,12 @@ struct SceneSpec {
     size_t triangles = 0;
     float floor_z = -3;  // the plane n.x = d with n = (0, 0, 1), d = floor_z
     Shade mesh, floor;
+    // Empty: the mesh is the scene, in world space. Else the mesh is placed
+    // once per matrix (object -> world) as Embree instances, and a hit's
+    // object-space normal turned by its instance's normal matrix (the
+    // inverse transpose), one matrix a lane.
+    std::vector<glm::dmat4> instances;
+    std::vector<std::array<V3, 3>> normal_matrices;  // rows
 };
 
 const Shade kGrey = shade_of(dvec3(200), 0.1, 0.9);
@@ -147,6 +160,33 @@ SceneSpec bunny_scene(const std::string& path) {
     }
     s.triangles = s.indices.size() / 3;
     s.floor_z = -2.2078f;
+    s.mesh = kGrey;
+    s.floor = shade_of(dvec3(140, 170, 200), 0.1, 0.9);
+    return s;
+}
+
+// bench/bunny_grid.sh's scene: the bunny in its own space, placed by each
+// row of the placements CSV (read by firsthit's own reader, so both
+// renderers get the same matrices), on the floor z = -3 of colour
+// (140, 170, 200).
+SceneSpec instanced_scene(const std::string& mesh_path, const std::string& placements) {
+    const fh::MeshData mesh = fh::load_mesh(mesh_path);
+    SceneSpec s;
+    for (const dvec3& q : mesh.positions) s.vertices.insert(s.vertices.end(), {float(q.x), float(q.y), float(q.z)});
+    for (const auto& tri : mesh.triangles) {
+        if (fh::Triangle<double>::make(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]], 0)
+                .degenerate())
+            continue;
+        s.indices.insert(s.indices.end(), {tri[0], tri[1], tri[2]});
+    }
+    for (const fh::Transform& t : fh::load_placements(placements)) {
+        s.instances.push_back(t.matrix());
+        const glm::dmat3 n = glm::inverseTranspose(glm::dmat3(s.instances.back()));
+        s.normal_matrices.push_back({to_v3(glm::row(n, 0)), to_v3(glm::row(n, 1)), to_v3(glm::row(n, 2))});
+    }
+    s.name = "instances" + std::to_string(s.instances.size());
+    s.triangles = s.indices.size() / 3 * s.instances.size();
+    s.floor_z = -3;
     s.mesh = kGrey;
     s.floor = shade_of(dvec3(140, 170, 200), 0.1, 0.9);
     return s;
@@ -330,6 +370,17 @@ void trace_block(RTCScene scene, const SceneSpec& spec, const CameraRays& cam, i
     const VI hit = on_mesh | on_floor;
     const VF t = on_floor ? t_floor : t_mesh;
     VF nx = load<VF>(rh.hit.Ng_x), ny = load<VF>(rh.hit.Ng_y), nz = load<VF>(rh.hit.Ng_z);
+    if (!spec.instances.empty()) {  // object-space normals: each turned by its instance's matrix
+        const VI inst = load<VI>(rh.hit.instID[0]);
+        for (int i = 0; i < W; ++i) {
+            if (!on_mesh[i]) continue;
+            const auto& m = spec.normal_matrices[size_t(inst[i])];
+            const float x = nx[i], y = ny[i], z = nz[i];
+            nx[i] = m[0].x * x + m[0].y * y + m[0].z * z;
+            ny[i] = m[1].x * x + m[1].y * y + m[1].z * z;
+            nz[i] = m[2].x * x + m[2].y * y + m[2].z * z;
+        }
+    }
     const VF g2 = nx * nx + ny * ny + nz * nz;
     const VF inv_g = rsqrt(g2 > 0 ? g2 : splat<VF>(1));
     nx = on_floor ? zero : nx * inv_g;
@@ -367,7 +418,12 @@ void trace_block(RTCScene scene, const SceneSpec& spec, const CameraRays& cam, i
         store(lit_mask, lit);
         RTCIntersectContext shadow_context;
         rtcInitIntersectContext(&shadow_context);
-        shadow_context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        // Debian's Embree 3.13.5 never returns from a coherent rtcOccluded16
+        // into instances on AVX-512 (seen here, both threads spinning in it
+        // for 15 minutes); incoherent, it does -- and measured faster
+        // (1 bunny instance: 10.0 ms against 15.6 ms with 8-wide packets).
+        shadow_context.flags = spec.instances.empty() ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                                      : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
         P::occluded(lit_mask, scene, &shadow_context, &shadow);
         // Blocked by the mesh (Embree sets tfar = -inf), or by the floor,
         // analytically (never here: the light is above it).
@@ -519,8 +575,33 @@ void on_error(void*, RTCError code, const char* message) {
     std::exit(1);
 }
 
-// The scene's mesh as one Embree triangle geometry, in a scene not yet committed.
+// The scene's mesh as one Embree triangle geometry, in a scene not yet
+// committed; or, with instances, that mesh in a scene of its own (built
+// here) placed by one instance geometry per matrix in the scene returned.
 RTCScene new_scene(RTCDevice device, const SceneSpec& spec) {
+    if (!spec.instances.empty()) {
+        SceneSpec object = spec;
+        object.instances.clear();
+        object.triangles = spec.indices.size() / 3;  // spec counts them once per instance
+        RTCScene mesh = new_scene(device, object);
+        rtcCommitScene(mesh);
+        RTCScene top = rtcNewScene(device);
+        rtcSetSceneFlags(top, RTC_SCENE_FLAG_NONE);
+        rtcSetSceneBuildQuality(top, RTC_BUILD_QUALITY_MEDIUM);
+        for (const glm::dmat4& m : spec.instances) {
+            RTCGeometry inst = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+            rtcSetGeometryInstancedScene(inst, mesh);
+            float xfm[12];  // 3 x 4, column major
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 3; ++r) xfm[3 * c + r] = float(m[c][r]);
+            rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+            rtcCommitGeometry(inst);
+            rtcAttachGeometry(top, inst);
+            rtcReleaseGeometry(inst);
+        }
+        rtcReleaseScene(mesh);  // the instances hold it
+        return top;
+    }
     RTCScene scene = rtcNewScene(device);
     rtcSetSceneFlags(scene, RTC_SCENE_FLAG_NONE);
     rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
@@ -569,7 +650,7 @@ Frame run(RTCDevice device, const SceneSpec& spec, const Blocks& blocks, Workers
 int main(int argc, char** argv) {
     int threads = 2, runs = 9, max_level = 8, width = 0;
     bool verbose = false, unknown = false;
-    std::string png, bunny = std::string(FIRSTHIT_SOURCE_DIR) + "/animations/meshes/bunny00.off";
+    std::string png, placements, bunny = std::string(FIRSTHIT_SOURCE_DIR) + "/animations/meshes/bunny00.off";
     for (int i = 1; i < argc; ++i) {
         const bool has_value = i + 1 < argc;
         if (!std::strcmp(argv[i], "--threads") && has_value) threads = std::max(1, std::atoi(argv[++i]));
@@ -578,12 +659,13 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--png") && has_value) png = argv[++i];
         else if (!std::strcmp(argv[i], "--width") && has_value) width = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--bunny") && has_value) bunny = argv[++i];
+        else if (!std::strcmp(argv[i], "--placements") && has_value) placements = argv[++i];
         else if (!std::strcmp(argv[i], "--verbose")) verbose = true;
         else unknown = true;
         if (unknown || (width != 0 && width != 4 && width != 8 && width != 16)) {
             std::fprintf(stderr,
                          "usage: firsthit_embree_reference [--threads N] [--runs K] [--max-level K] "
-                         "[--png OUT.png] [--bunny FILE.off] [--width 4|8|16] [--verbose]\n");
+                         "[--png OUT.png] [--bunny FILE.off] [--placements FILE.csv] [--width 4|8|16] [--verbose]\n");
             return 2;
         }
     }
@@ -616,6 +698,17 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     Workers workers(threads);
     Frame last;
+    if (!placements.empty()) {  // the instancing benchmark's scene alone
+        try {
+            last = run(device, instanced_scene(bunny, placements), blocks, workers, runs);
+            if (!png.empty()) fh::write_png(png, last.image);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "embree_reference: %s\n", e.what());
+            return 1;
+        }
+        rtcReleaseDevice(device);
+        return 0;
+    }
     for (int level = 1; level <= max_level; ++level) last = run(device, icosphere_scene(level), blocks, workers, runs);
 
     bool have_bunny = false;
