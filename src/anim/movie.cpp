@@ -50,20 +50,44 @@ Transform transform_at(const Movie& movie, size_t surface, int frame) {
     return tr;
 }
 
+// The world matrix of group g at a frame: its parents' and its own
+// transforms, animated parts replaced.
+glm::dmat4 group_world_at(const Movie& movie, int g, int frame) {
+    glm::dmat4 world(1.0);
+    for (; g >= 0; g = movie.scene.groups[size_t(g)].parent) {
+        size_t named = 0;  // the group's record, which animations address
+        while (movie.scene.named_surfaces[named].kind != SurfaceKind::group ||
+               movie.scene.named_surfaces[named].index != size_t(g))
+            ++named;
+        world = transform_at(movie, named, frame).matrix() * world;
+    }
+    return world;
+}
+
 // Where a followed thing is at a frame: a spot light's position, a sphere's
-// centre, a triangle's or mesh's own centre (of its bounding box as read)
-// carried by its transform.
+// centre, a triangle's, mesh's or instance's own centre (of its bounding box
+// as read) carried by its transform, a group's origin -- each carried by the
+// groups around it.
 dvec3 followed(const Movie& movie, const Follow& f, int frame) {
     if (f.spot_light) return value_at(movie, target(Property::light_position, f.index), frame);
     const NamedSurface& s = movie.scene.named_surfaces[f.index];
-    if (s.kind == SurfaceKind::sphere) return value_at(movie, target(Property::sphere_center, f.index), frame);
+    const bool grouped = s.group >= 0;
+    const glm::dmat4 around = grouped ? group_world_at(movie, s.group, frame) : glm::dmat4(1.0);
+    if (s.kind == SurfaceKind::sphere) {
+        const dvec3 c = value_at(movie, target(Property::sphere_center, f.index), frame);
+        return grouped ? dvec3(around * glm::dvec4(c, 1.0)) : c;
+    }
+    if (s.kind == SurfaceKind::group) return dvec3(group_world_at(movie, int(s.index), frame)[3]);
+    const Mesh& mesh = s.kind == SurfaceKind::instance
+        ? *movie.scene.meshes[size_t(movie.scene.instances[s.index].mesh)].mesh : *s.mesh;
     dvec3 lo(kInfinity<double>), hi(-kInfinity<double>);
-    for (const dvec3& p : s.mesh->positions) {
+    for (const dvec3& p : mesh.positions) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
     const Transform tr = transform_at(movie, f.index, frame);
-    return tr.identity() ? 0.5 * (lo + hi) : dvec3(tr.matrix() * glm::dvec4(0.5 * (lo + hi), 1.0));
+    if (!grouped && tr.identity()) return 0.5 * (lo + hi);
+    return dvec3(around * tr.matrix() * glm::dvec4(0.5 * (lo + hi), 1.0));
 }
 
 // Where a Toward aims from: the camera's eye, a spot light's position.

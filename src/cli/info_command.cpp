@@ -20,7 +20,17 @@ void print_scene(const Scene& s, const RenderSettings& settings) {
               << "planes: " << s.planes.size() << "\n"
               << "triangles: " << s.triangles.size() << "\n"
               << "meshes: " << s.mesh_files << "\n"
-              << "degenerate_triangles_dropped: " << s.degenerate_mesh_triangles << "\n"
+              << "degenerate_triangles_dropped: " << s.degenerate_mesh_triangles << "\n";
+    // Instances share their mesh's triangles: distinct ones are what memory
+    // holds, instanced ones what the picture shows.
+    size_t distinct = 0, instanced = 0;
+    for (const SceneMesh& m : s.meshes) distinct += m.mesh->triangles.size();
+    for (const Instance& i : s.instances) instanced += s.meshes[size_t(i.mesh)].mesh->triangles.size();
+    std::cout << "shared_meshes: " << s.meshes.size() << "\n"
+              << "instances: " << s.instances.size() << "\n"
+              << "groups: " << s.groups.size() << "\n"
+              << "distinct_triangles: " << s.triangles.size() + distinct << "\n"
+              << "instanced_triangles: " << instanced << "\n"
               << "lights:";
     for (const auto& l : s.ambient_lights) std::cout << " " << l.name << (l.on ? "" : "(off)");
     for (const auto& l : s.directional_lights) std::cout << " " << l.name << (l.on ? "" : "(off)");

@@ -18,10 +18,14 @@ namespace fh {
 template <typename T>
 inline constexpr T kInstanceReach = T(1) + 4 * std::numeric_limits<T>::epsilon();
 
-// Hits on the set's instances nearer than h's, merged into h.
+inline constexpr int kNoInstance = -1;  // a hit on the world's own primitives
+
+// Hits on the set's instances nearer than h's (the world's), merged into
+// h; returns each lane's instance, or kNoInstance.
 template <typename T>
-FH_HOT_INLINE void closest_instance_hits(const InstanceSet<T>& set, const RayPacket<T>& ray,
-                                         const LaneInts<T>& active, HitLanes<T>& h) {
+FH_HOT_INLINE LaneInts<T> closest_instance_hits(const InstanceSet<T>& set, const RayPacket<T>& ray,
+                                                   const LaneInts<T>& active, HitLanes<T>& h) {
+    LaneInts<T> on = LaneInts<T>{} + kNoInstance;
     for_each_leaf(set.walk_nodes, ray, active, h.t, [&](const WalkNode<T>& n, const LaneInts<T>& entering) FH_HOT_LAMBDA {
         for (int k = n.first_listed(); k < n.first_listed() + n.count(); ++k) {
             const int i = set.bvh.prims[size_t(k)];
@@ -31,14 +35,15 @@ FH_HOT_INLINE void closest_instance_hits(const InstanceSet<T>& set, const RayPac
             const Lanes<T> limit = select(entering, h.t * scale * kInstanceReach<T>, splat(T(0)));
             const HitLanes<T> m = closest_hits_within(*set.meshes[size_t(instance.mesh)], local, entering, limit);
             const Lanes<T> t = m.t / scale;
-            const LaneInts<T> tie = (t == h.t) & ((h.instance > i) | ((h.instance == i) & (h.prim > m.prim)));
+            const LaneInts<T> tie = (t == h.t) & ((on > i) | ((on == i) & (h.prim > m.prim)));
             const LaneInts<T> nearer = (m.prim != kNoHit) & ((t < h.t) | tie);
             h.t = select(nearer, t, h.t);
             h.prim = select(nearer, m.prim, h.prim);
-            h.instance = select(nearer, LaneInts<T>{} + i, h.instance);
+            on = select(nearer, LaneInts<T>{} + i, on);
         }
         return false;
     });
+    return on;
 }
 
 // Per lane: some instance's surface lies in (0, t_max); t_max is 0 in the
@@ -62,13 +67,13 @@ FH_HOT_INLINE LaneInts<T> occluded_by_instances(const InstanceSet<T>& set, const
     return blocked;
 }
 
-// Both levels: the nearest hit of each active ray.
+// Both levels: the nearest hit of each active ray, and its instance.
 template <typename T>
 FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& world, const InstanceSet<T>* instances,
-                                       const RayPacket<T>& ray, const LaneInts<T>& active,
+                                       const RayPacket<T>& ray, const LaneInts<T>& active, LaneInts<T>& instance,
                                        const PrimitiveSubset* subset = nullptr) {
     HitLanes<T> h = closest_hits(world, ray, active, subset);
-    if (instances) closest_instance_hits(*instances, ray, active, h);
+    instance = instances ? closest_instance_hits(*instances, ray, active, h) : LaneInts<T>{} + kNoInstance;
     return h;
 }
 
@@ -82,12 +87,30 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& world, const InstanceS
                                            active & ~blocked);
 }
 
+// The same two as calls, for the shader's loop over scenes with instances
+// (render/shading.h): one copy of each walk per scalar type, however many
+// shader variants call them.
+template <typename T>
+__attribute__((noinline)) HitLanes<T> closest_hits_out_of_line(const FlatGeometry<T>& world,
+                                                               const InstanceSet<T>* instances,
+                                                               const RayPacket<T>& ray, const LaneInts<T>& active,
+                                                               LaneInts<T>& instance, const PrimitiveSubset* subset) {
+    return closest_hits(world, instances, ray, active, instance, subset);
+}
+template <typename T>
+__attribute__((noinline)) LaneInts<T> occluded_out_of_line(const FlatGeometry<T>& world,
+                                                           const InstanceSet<T>* instances, const RayPacket<T>& ray,
+                                                           const Lanes<T>& t_max, const LaneInts<T>& active) {
+    return occluded(world, instances, ray, t_max, active);
+}
+
 // The nearest hit of one ray on both levels (tests, the viewer).
 template <typename T>
 Hit<T> closest_hit(const FlatGeometry<T>& world, const InstanceSet<T>* instances, const Ray<T>& ray) {
-    const HitLanes<T> h = closest_hits(world, instances, RayPacket<T>::splat(ray), first_lanes<T>(1));
+    LaneInts<T> instance;
+    const HitLanes<T> h = closest_hits(world, instances, RayPacket<T>::splat(ray), first_lanes<T>(1), instance);
     if (h.prim[0] == kNoHit) return {};
-    return {h.t[0], int(h.prim[0]), int(h.instance[0])};
+    return {h.t[0], int(h.prim[0]), int(instance[0])};
 }
 
 }  // namespace fh

@@ -19,13 +19,10 @@
 
 namespace fh {
 
-inline constexpr int kNoInstance = -1;  // a hit on the world's own primitives
-
 template <typename T>
 struct HitLanes {
-    Lanes<T> t;            // the nearest hit's distance; 0 or infinity where none
-    LaneInts<T> prim;      // its primitive id (in its instance's mesh, if any), or kNoHit
-    LaneInts<T> instance;  // its instance (render/instance_set.h), or kNoInstance
+    Lanes<T> t;        // the nearest hit's distance; 0 or infinity where none
+    LaneInts<T> prim;  // its primitive id (in its instance's mesh, if any), or kNoHit
 };
 
 // The primitives of a leaf the walk reports, tested against the rays:
@@ -88,7 +85,7 @@ template <typename T>
 FH_HOT_INLINE HitLanes<T> closest_hits_within(const FlatGeometry<T>& geometry, const RayPacket<T>& ray,
                                               const LaneInts<T>& active, const Lanes<T>& t_max,
                                               const PrimitiveSubset* subset = nullptr) {
-    HitLanes<T> h{t_max, LaneInts<T>{} + kNoHit, LaneInts<T>{} + kNoInstance};
+    HitLanes<T> h{t_max, LaneInts<T>{} + kNoHit};
     // On a tie the lower primitive id wins, whatever order the BVH visits
     // them in: shapes before planes before triangles (render/primitive_ids.h), triangles in the flat
     // scene's order (the file's for small scenes, the leaves' for others).

@@ -1,4 +1,4 @@
-// Shading (report 8, docs/model.md section 4): the colour each ray of a packet brings back.
+// Shading (report 8, SPEC section 4): the colour each ray of a packet brings back.
 //   1. nearest hit; none -> the background
 //   2. ambient
 //   3-5. per directional or spot light, unless a shadow ray finds a blocker:
@@ -20,7 +20,11 @@
 //
 // F (ShaderFeature bits) fixes at compile time whether shadow rays, the
 // specular term and glazing exist at all; with_shader picks the variant the
-// frame's effect plan calls for.
+// frame's effect plan calls for. kInstances: the scene has instances (the
+// second level, render/instance_walk.h), reached through calls, so that
+// every other scene's shader keeps its walks inlined and no call in its
+// loop -- a call there, even one never taken, made the report's Movie 2
+// 5-11% slower with AVX-512, whose vector registers a call may overwrite.
 #pragma once
 
 #include <cmath>
@@ -36,15 +40,16 @@
 
 namespace fh {
 
-template <typename T, unsigned F>
+template <typename T, unsigned F, bool kInstances = false>
 class Shader {
 public:
     static constexpr bool kShadowRays = (F & kShadows) != 0;
     static constexpr bool kSpecularTerm = (F & kSpecular) != 0;
     static constexpr bool kReflections = (F & kGlazing) != 0;
 
-    explicit Shader(const FlatScene<T>& scene)
-        : scene_(scene), geometry_(*scene.geometry), instances_(scene.instances.get()) {}
+    explicit Shader(const FlatScene<T>& scene) : scene_(scene), geometry_(*scene.geometry) {
+        if constexpr (kInstances) instances_ = scene.instances.get();
+    }
 
     // The colour of each active ray of a packet (unclamped); 0 in the others.
     // first_hits: the primitives the rays' first hits can be on (a tile's
@@ -56,7 +61,8 @@ public:
         ColorLanes<T> colour = black;
         Lanes<T> weight = splat(T(1));
         for (int depth = 0;; ++depth) {
-            const HitLanes<T> h = closest_hits(geometry_, instances_, ray, active, depth == 0 ? first_hits : nullptr);
+            LaneInts<T> instance;  // each lane's instance, or kNoInstance (kInstances only)
+            const HitLanes<T> h = hits(ray, active, depth == 0 ? first_hits : nullptr, instance);
             const LaneInts<T> hit = h.prim != kNoHit;
             ColorLanes<T> local = select(active & ~hit, background(ray.direction), black);
             if (none(hit)) {
@@ -64,7 +70,8 @@ public:
                 break;
             }
             SurfaceLanes surface;
-            surfaces(ray, h, hit, surface, local);
+            if constexpr (kInstances) instanced_surfaces(ray, h, instance, hit, surface, local);
+            else surfaces(ray, h, hit, surface, local);
             add_lights(ray, surface, hit, local, counts);
             colour += weight * local;
             if constexpr (!kReflections) break;
@@ -125,6 +132,89 @@ private:
         else dst = select(lanes, value, dst);
     }
 
+    // Hit points, facing normals, secondary-ray origins, material terms; the
+    // ambient term goes straight into local (lanes with a hit only).
+    FH_HOT_INLINE void surfaces(const RayPacket<T>& ray, const HitLanes<T>& h,
+                                const LaneInts<T>& hit, SurfaceLanes& s, ColorLanes<T>& local) const {
+        const Lanes<T> zero = splat(T(0));
+        const Vec3Lanes<T> p = ray.at(select(hit, h.t, zero));
+        ColorLanes<T> ambient;
+        Vec3Lanes<T> geometric;  // the face's normal: where secondary rays start
+        for_each_distinct(h.prim, hit, [&](int prim, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
+            Vec3Lanes<T> point, normal, shading;
+            geometry_.project(prim, p, point, normal, shading);
+            put(s.point, point, lanes, first);
+            put(geometric, normal, lanes, first);
+            put(s.normal, shading, lanes, first);
+            const int material = geometry_.surfaces[size_t(prim)].material;
+            const MaterialShading<T>& m = scene_.shading[size_t(material)];
+            put(ambient, Vec3Lanes<T>::splat(m.ambient), lanes, first);
+            put(s.reflectivity, splat(m.reflectivity), lanes, first);
+            put(s.glazed, m.glazed ? lanes : LaneInts<T>{}, lanes, first);
+            put(s.material, LaneInts<T>{} + material, lanes, first);
+        });
+        local += select(hit, ambient, Vec3Lanes<T>{zero, zero, zero});
+        // Both normals turn with the face: a smooth normal stays on the
+        // side of the face the ray came from.
+        const LaneInts<T> flip = dot(geometric, ray.direction) > T(0);
+        s.normal = select(flip, -s.normal, s.normal);
+        s.origin = offset_origin(s.point, select(flip, -geometric, geometric));
+    }
+
+    // The nearest hits on both levels, or on the world's alone.
+    FH_HOT_INLINE HitLanes<T> hits(const RayPacket<T>& ray, const LaneInts<T>& active,
+                                   const PrimitiveSubset* subset, LaneInts<T>& instance) const {
+        if constexpr (kInstances) return closest_hits_out_of_line(geometry_, instances_, ray, active, instance, subset);
+        else return closest_hits(geometry_, ray, active, subset);
+    }
+    // Shadow rays blocked on both levels, or on the world's alone.
+    FH_HOT_INLINE LaneInts<T> blocked(const Vec3Lanes<T>& origin, const Vec3Lanes<T>& to_light,
+                                      const Lanes<T>& distance, const LaneInts<T>& lit) const {
+        if constexpr (kInstances) return occluded_out_of_line(geometry_, instances_, {origin, to_light}, distance, lit);
+        else return occluded(geometry_, {origin, to_light}, distance, lit);
+    }
+
+    // The same where instances exist: lanes are told apart by instance and
+    // primitive; an instance's primitive is projected in its mesh's space and
+    // carried back to the world (normals by the inverse transpose).
+    FH_HOT_INLINE void instanced_surfaces(const RayPacket<T>& ray, const HitLanes<T>& h, const LaneInts<T>& instance,
+                                          const LaneInts<T>& hit, SurfaceLanes& s, ColorLanes<T>& local) const {
+        const Lanes<T> zero = splat(T(0));
+        const Vec3Lanes<T> p = ray.at(select(hit, h.t, zero));
+        ColorLanes<T> ambient{zero, zero, zero};
+        Vec3Lanes<T> geometric{zero, zero, zero};
+        for_each_distinct_pair(instance, h.prim, hit, [&](int in, int prim, const LaneInts<T>& lanes, auto first)
+                                                          FH_HOT_LAMBDA {
+            Vec3Lanes<T> point, normal, shading;
+            int material;
+            if (in < 0) {
+                geometry_.project(prim, p, point, normal, shading);
+                material = geometry_.surfaces[size_t(prim)].material;
+            } else {
+                const FlatInstance<T>& inst = instances_->instances[size_t(in)];
+                const FlatGeometry<T>& mesh = *instances_->meshes[size_t(inst.mesh)];
+                mesh.project(prim, inst.to_object.point(p), point, normal, shading);
+                const bool smooth = mesh.surfaces[size_t(prim)].smooth >= 0;
+                point = inst.to_world.point(point);
+                normal = normalize(inst.normal_to_world.vector(normal));
+                shading = smooth ? normalize(inst.normal_to_world.vector(shading)) : normal;
+                material = inst.material;
+            }
+            put(s.point, point, lanes, first);
+            put(geometric, normal, lanes, first);
+            put(s.normal, shading, lanes, first);
+            const MaterialShading<T>& m = scene_.shading[size_t(material)];
+            put(ambient, Vec3Lanes<T>::splat(m.ambient), lanes, first);
+            put(s.reflectivity, splat(m.reflectivity), lanes, first);
+            put(s.glazed, m.glazed ? lanes : LaneInts<T>{}, lanes, first);
+            put(s.material, LaneInts<T>{} + material, lanes, first);
+        });
+        local += select(hit, ambient, Vec3Lanes<T>{zero, zero, zero});
+        const LaneInts<T> flip = dot(geometric, ray.direction) > T(0);
+        s.normal = select(flip, -s.normal, s.normal);
+        s.origin = offset_origin(s.point, select(flip, -geometric, geometric));
+    }
+
     // Calls fn(a, b, lanes, first) for each distinct pair (a, b) among the
     // lanes in mask, as for_each_distinct does for one id.
     template <typename Fn>
@@ -140,66 +230,6 @@ private:
         if (none(mask)) return;
         next(std::true_type{});
         while (any(mask)) next(std::false_type{});
-    }
-
-    // One hit's primitive as shading reads it: its point and normals, its
-    // material. An instance's primitive is projected in its mesh's space and
-    // carried back to the world (normals by the inverse transpose).
-    FH_HOT_INLINE int project(int instance, int prim, const Vec3Lanes<T>& p, Vec3Lanes<T>& point,
-                              Vec3Lanes<T>& normal, Vec3Lanes<T>& shading) const {
-        if (instance < 0) {
-            geometry_.project(prim, p, point, normal, shading);
-            return geometry_.surfaces[size_t(prim)].material;
-        }
-        const FlatInstance<T>& in = instances_->instances[size_t(instance)];
-        const FlatGeometry<T>& mesh = *instances_->meshes[size_t(in.mesh)];
-        mesh.project(prim, in.to_object.point(p), point, normal, shading);
-        const bool smooth = mesh.surfaces[size_t(prim)].smooth >= 0;
-        point = in.to_world.point(point);
-        normal = normalize(in.normal_to_world.vector(normal));
-        shading = smooth ? normalize(in.normal_to_world.vector(shading)) : normal;
-        return in.material;
-    }
-
-    // Hit points, facing normals, secondary-ray origins, material terms; the
-    // ambient term goes straight into local (lanes with a hit only).
-    FH_HOT_INLINE void surfaces(const RayPacket<T>& ray, const HitLanes<T>& h,
-                                const LaneInts<T>& hit, SurfaceLanes& s, ColorLanes<T>& local) const {
-        const Lanes<T> zero = splat(T(0));
-        const Vec3Lanes<T> p = ray.at(select(hit, h.t, zero));
-        ColorLanes<T> ambient;
-        Vec3Lanes<T> geometric;  // the face's normal: where secondary rays start
-        auto take = [&](const Vec3Lanes<T>& point, const Vec3Lanes<T>& normal, const Vec3Lanes<T>& shading,
-                        int material, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
-            put(s.point, point, lanes, first);
-            put(geometric, normal, lanes, first);
-            put(s.normal, shading, lanes, first);
-            const MaterialShading<T>& m = scene_.shading[size_t(material)];
-            put(ambient, Vec3Lanes<T>::splat(m.ambient), lanes, first);
-            put(s.reflectivity, splat(m.reflectivity), lanes, first);
-            put(s.glazed, m.glazed ? lanes : LaneInts<T>{}, lanes, first);
-            put(s.material, LaneInts<T>{} + material, lanes, first);
-        };
-        if (!instances_) {
-            for_each_distinct(h.prim, hit, [&](int prim, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
-                Vec3Lanes<T> point, normal, shading;
-                geometry_.project(prim, p, point, normal, shading);
-                take(point, normal, shading, geometry_.surfaces[size_t(prim)].material, lanes, first);
-            });
-        } else {
-            for_each_distinct_pair(h.instance, h.prim, hit,
-                                   [&](int instance, int prim, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
-                                       Vec3Lanes<T> point, normal, shading;
-                                       const int material = project(instance, prim, p, point, normal, shading);
-                                       take(point, normal, shading, material, lanes, first);
-                                   });
-        }
-        local += select(hit, ambient, Vec3Lanes<T>{zero, zero, zero});
-        // Both normals turn with the face: a smooth normal stays on the
-        // side of the face the ray came from.
-        const LaneInts<T> flip = dot(geometric, ray.direction) > T(0);
-        s.normal = select(flip, -s.normal, s.normal);
-        s.origin = offset_origin(s.point, select(flip, -geometric, geometric));
     }
 
     // Inlined into trace: once the BVH walk made occluded() large, GCC
@@ -232,7 +262,7 @@ private:
         if (none(lit)) return;
         if constexpr (kShadowRays) {
             counts.shadow += std::uint64_t(count(lit));
-            lit &= ~occluded(geometry_, instances_, {s.origin, light.to_light}, light.distance, lit);
+            lit &= ~blocked(s.origin, light.to_light, light.distance, lit);
             if (none(lit)) return;
         }
         // Per material the lit points show: its colour terms with this light,
@@ -273,22 +303,31 @@ private:
 
     const FlatScene<T>& scene_;
     const FlatGeometry<T>& geometry_;
-    const InstanceSet<T>* instances_;  // nullptr: none
+    // kInstances: the scene's instances. Else nothing at all: the shader of
+    // scenes without instances is the same object as before they existed.
+    struct NoInstances {};
+    [[no_unique_address]] std::conditional_t<kInstances, const InstanceSet<T>*, NoInstances> instances_;
 };
 
-// Calls fn(shader) with the shader variant for the scene's effect plan.
+// Calls fn(shader) with the shader variant for the scene's effect plan and
+// whether it has instances.
+template <typename T, bool kInstances, typename Fn>
+decltype(auto) with_shader_of(const FlatScene<T>& scene, Fn&& fn) {
+    switch (shader_features(scene.plan)) {
+    case 0: return fn(Shader<T, 0, kInstances>(scene));
+    case 1: return fn(Shader<T, 1, kInstances>(scene));
+    case 2: return fn(Shader<T, 2, kInstances>(scene));
+    case 3: return fn(Shader<T, 3, kInstances>(scene));
+    case 4: return fn(Shader<T, 4, kInstances>(scene));
+    case 5: return fn(Shader<T, 5, kInstances>(scene));
+    case 6: return fn(Shader<T, 6, kInstances>(scene));
+    default: return fn(Shader<T, 7, kInstances>(scene));
+    }
+}
 template <typename T, typename Fn>
 decltype(auto) with_shader(const FlatScene<T>& scene, Fn&& fn) {
-    switch (shader_features(scene.plan)) {
-    case 0: return fn(Shader<T, 0>(scene));
-    case 1: return fn(Shader<T, 1>(scene));
-    case 2: return fn(Shader<T, 2>(scene));
-    case 3: return fn(Shader<T, 3>(scene));
-    case 4: return fn(Shader<T, 4>(scene));
-    case 5: return fn(Shader<T, 5>(scene));
-    case 6: return fn(Shader<T, 6>(scene));
-    default: return fn(Shader<T, 7>(scene));
-    }
+    if (scene.instances) return with_shader_of<T, true>(scene, fn);
+    return with_shader_of<T, false>(scene, fn);
 }
 
 }  // namespace fh

@@ -165,9 +165,10 @@ Target read_target(const YamlReader& r, const YAML::Node& at, const std::string&
     std::vector<std::string> names;
     for (size_t i = 0; i < scene.named_surfaces.size(); ++i) {
         const NamedSurface& s = scene.named_surfaces[i];
+        if (s.name.empty()) continue;  // a group's unnamed member
         names.push_back(s.name);
         if (s.name != name) continue;
-        const char* kind[] = {"sphere", "plane", "triangle", "mesh"};
+        const char* kind[] = {"sphere", "plane", "triangle", "mesh", "instance", "instances", "group"};
         Target t = pick_property(r, at, path, std::string(kind[int(s.kind)]) + " '" + name + "'", rest,
                                  surface_properties(s.kind));
         t.index = i;
@@ -260,10 +261,12 @@ Toward read_toward(const YamlReader& r, const YAML::Node& node, const Movie& mov
     if (words.size() == 2 && words[0] == "surfaces") {
         if (const NamedSurface* s = scene.find_surface(words[1])) {
             if (s->kind == SurfaceKind::plane) r.fail(node, "'toward' cannot follow a plane: it has no centre");
+            if (s->kind == SurfaceKind::instances)
+                r.fail(node, "'toward' cannot follow a set of instances: name one instance, or their group");
             return {dvec3(0), Follow{false, size_t(s - scene.named_surfaces.data()), node.Scalar()}};
         }
     }
-    r.fail(node, "'toward' follows 'surfaces.NAME' (a named sphere, triangle or mesh) or 'lights.NAME' "
+    r.fail(node, "'toward' follows 'surfaces.NAME' (a named sphere, triangle, mesh, instance or group) or 'lights.NAME' "
                  "(a spot light); no such thing as '" + node.Scalar() + "'");
 }
 
