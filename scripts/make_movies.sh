@@ -4,7 +4,7 @@
 # fed yuv420p frames that firsthit converts on its render threads.
 # Two single-threaded encoders beside two renderers keep both cores busy to
 # the end with less work in all than one movie at a time with x264 on both
-# cores (README, Speed). On a terminal one line shows both movies' progress.
+# cores (docs/speed.md). On a terminal one line shows both movies' progress.
 #
 #   scripts/make_movies.sh [OUTPUT_DIR [MOVIE.yaml ...]]
 # (default: output/, and animations/movie1.yaml and movie2.yaml). FIRSTHIT

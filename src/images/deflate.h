@@ -2,8 +2,8 @@
 // made for the data, whose only matches are runs of a repeated byte
 // (distance 1). PNG rows after the Sub filter are mostly such runs -- 77% of
 // a frame's bytes are zeros, in runs -- so on the tracer's frames this is
-// about 4x faster than zlib at level 1, for files a third larger (README,
-// Speed): one pass to find the runs, one to write the codes, no hash chains.
+// about 4x faster than zlib at level 1, for files a third larger (docs/speed.md):
+// one pass to find the runs, one to write the codes, no hash chains.
 #pragma once
 
 #include <cstdint>

@@ -16,7 +16,7 @@
 // JPEG, BMP and TGA writers); the deflate inside is ours,
 // zlib_compress_runs, through stb's hook for it: after the Sub filter a
 // frame is mostly runs of 0, which it codes ~4x faster than zlib at level 1
-// (README, Speed). The chunks' CRCs are zlib's crc32() (fh::png_crc32, below).
+// (docs/speed.md). The chunks' CRCs are zlib's crc32() (fh::png_crc32, below).
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
@@ -58,7 +58,7 @@ static const bool kPngFilterChosen = (stbi_write_force_png_filter = 1, true);
 namespace fh {
 
 // zlib's crc32() rather than a CRC-32 of our own: it is faster (~2.8x our
-// former slicing-by-8 one, README, Speed) and zlib is linked already. stb
+// former slicing-by-8 one, docs/speed.md) and zlib is linked already. stb
 // passes a chunk's length as an int, which always fits crc32()'s 32-bit uInt
 // (the largest frame, 16384x16384, is ~805 MB of filtered bytes); crc32_z,
 // the same CRC with a z_size_t length, keeps any size_t whole all the same.

@@ -1,7 +1,7 @@
 // RGB to Y'CbCr 4:2:0 (planar, "yuv420p"): the form H.264 encoders take.
 // `make movies` streams frames to ffmpeg already converted, so the encoder
 // process -- one thread beside the render pool -- does not spend a second
-// per movie converting them itself (README, Speed).
+// per movie converting them itself (docs/speed.md).
 //
 // The conversion is the one ffmpeg applies to RGB frames that carry no
 // colour tags: BT.601, limited range (luma 16..235, chroma 16..240). Luma is
