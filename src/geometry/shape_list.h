@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/vec.h"
@@ -60,6 +61,20 @@ public:
     template <typename Fn>
     FH_HOT_INLINE decltype(auto) visit(std::size_t i, Fn&& fn) const { return visit_from<0>(i, fn); }
 
+    // For a list of ids in increasing order, from list[k] on: fn(shape, id)
+    // for each that is a shape (id < end, end = size()), kind by kind -- one
+    // loop per kind, no test of the kind per shape -- leaving k at the first
+    // id past them. fn returns true to stop; so does this. Past the first
+    // kind one comparison skips the others when the scene has none: a kind
+    // the scene does not use costs it nothing.
+    template <typename Fn>
+    FH_HOT_INLINE bool for_each_listed(const std::vector<int>& list, std::size_t& k, int end, Fn&& fn) const {
+        std::size_t first = 0;  // the id of the current kind's first shape
+        if (run_of(std::get<0>(arrays_), first, list, k, fn)) return true;
+        if (first == std::size_t(end)) return false;
+        return listed_runs(list, k, first, fn, std::make_index_sequence<kKinds>{});
+    }
+
     // The same shapes in scalar type U.
     template <typename U>
     ShapeArrays<U, ShapeList<Shapes...>> in() const {
@@ -78,6 +93,23 @@ private:
             if (i < a.size()) return fn(a[i]);
             return visit_from<K + 1>(i - a.size(), fn);
         }
+    }
+    // (Not std::apply: GCC does not inline it into the walk.)
+    template <typename Fn, std::size_t... K>
+    FH_HOT_INLINE bool listed_runs(const std::vector<int>& list, std::size_t& k, std::size_t first, Fn& fn,
+                                   std::index_sequence<K...>) const {
+        bool stop = false;
+        ((stop = stop || (K > 0 && run_of(std::get<K>(arrays_), first, list, k, fn))), ...);
+        return stop;
+    }
+    template <typename Array, typename Fn>
+    static FH_HOT_INLINE bool run_of(const Array& a, std::size_t& first, const std::vector<int>& list, std::size_t& k,
+                                     Fn& fn) {
+        const std::size_t end = first + a.size();
+        for (; k < list.size() && std::size_t(list[k]) < end; ++k)
+            if (fn(a[std::size_t(list[k]) - first], list[k])) return true;
+        first = end;
+        return false;
     }
     template <template <typename> class S, typename U>
     void convert(ShapeArrays<U, ShapeList<Shapes...>>& out) const {

@@ -106,10 +106,10 @@ FH_HOT_INLINE HitLanes<T> closest_hits_within(const FlatGeometry<T>& geometry, c
     if (!listed.walk_bvh) {
         const std::vector<int>& list = listed.prims;
         size_t k = 0;
-        for (; k < list.size() && ids.is_shape(list[k]); ++k)
-            keep(geometry.shapes.visit(size_t(list[k]), [&](const auto& s) FH_HOT_LAMBDA {
-                return s.intersect(ray, T(0), h.t);
-            }), list[k]);
+        geometry.shapes.for_each_listed(list, k, ids.shapes, [&](const auto& s, int id) FH_HOT_LAMBDA {
+            keep(s.intersect(ray, T(0), h.t), id);
+            return false;
+        });
         for (int p = 0; p < planes; ++p) keep(geometry.planes[size_t(p)].intersect(ray, T(0), h.t), ids.plane(p));
         if (k == list.size() || (geometry.small && none(geometry.few_triangles.reaches(ray) & (h.t > T(0))))) return h;
         const RayBasis<T> triangle_basis(ray);
@@ -195,11 +195,10 @@ FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& geometry, const RayPac
     if (!geometry.everything.walk_bvh) {  // a small scene: every shape, the triangles behind their bound
         const std::vector<int>& list = geometry.everything.prims;
         size_t k = 0;
-        for (; k < list.size() && ids.is_shape(list[k]); ++k)
-            if (block(geometry.shapes.visit(size_t(list[k]), [&](const auto& s) FH_HOT_LAMBDA {
-                    return s.intersect(ray, T(0), limit);
-                })))
-                return blocked;
+        if (geometry.shapes.for_each_listed(list, k, ids.shapes, [&](const auto& s, int) FH_HOT_LAMBDA {
+                return block(s.intersect(ray, T(0), limit));
+            }))
+            return blocked;
         if (k == list.size() || none(geometry.few_triangles.reaches(ray) & (limit > T(0)))) return blocked;
         const RayBasis<T> triangle_basis(ray);
         for (; k < list.size(); ++k)
