@@ -74,7 +74,8 @@ public:
 
 private:
     using Keys = std::vector<std::string>;
-    static constexpr const char* kTypes[] = {"sphere", "plane", "triangle", "mesh", "instance", "instances", "group"};
+    static constexpr const char* kTypes[] = {"sphere", "plane", "triangle", "mesh", "instance", "instances", "group",
+                                             "disk"};
 
     void read(const YAML::Node& node, const Place& place) {
         // The type decides which keys are allowed, so it is read first.
@@ -89,7 +90,8 @@ private:
         case 2: case 3: read_triangles(node, place, named, type == 3); break;
         case 4: read_instance(node, place, named); break;
         case 5: read_instances(node, place, named); break;
-        default: read_group(node, place, named); return;  // recorded before its members
+        case 6: read_group(node, place, named); return;  // recorded before its members
+        default: read_disk(node, place); return;
         }
         if (!named.name.empty() || named.group >= 0) scene_.named_surfaces.push_back(std::move(named));
     }
@@ -108,6 +110,15 @@ private:
             r_.fail(node, "a sphere in a group scaled unevenly would be an ellipsoid: scale group '" +
                               scene_.groups[size_t(place.group)].name + "' (and those around it) by one number");
         place_surface(scene_, named, place.world);
+    }
+
+    // A disk: fixed where the file puts it (no name, not in a group: it has
+    // no animatable properties yet).
+    void read_disk(const YAML::Node& node, const Place& place) {
+        const MapReader m(r_, node, "disk", {"type", "center", "normal", "radius", "material"});
+        if (place.group >= 0) r_.fail(node, "a disk cannot be in a group (it cannot move yet)");
+        scene_.shapes.of<Disk>().push_back(
+            {m.vec3("center"), unit_or_zero(m.direction("normal")), m.positive("radius"), material_index(m, scene_)});
     }
 
     void read_plane(const YAML::Node& node, const Place& place, NamedSurface& named) {
