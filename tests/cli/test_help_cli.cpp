@@ -1,6 +1,6 @@
 // One source of truth for help: every flag of the flag table appears in
-// `firsthit --help` and in the README's command-line section (whose synopsis
-// is the help's own), every command's help lists each flag it takes, and
+// `firsthit --help` and in the command-line section of docs/cli.md (whose
+// synopsis is the help's own), every command's help lists each flag it takes, and
 // Args::parse takes exactly those.
 #include <gtest/gtest.h>
 
@@ -14,32 +14,32 @@
 namespace fh::test {
 namespace {
 
-// The README's "## Command line" section, up to the next "## ".
-std::string readme_command_line() {
-    const std::string readme = slurp(source_path("README.md"));
-    const size_t start = readme.find("\n## Command line\n");
-    EXPECT_NE(start, std::string::npos) << "README.md has no '## Command line' section";
+// The "## Command line" section of docs/cli.md, up to the next "## ".
+std::string docs_command_line() {
+    const std::string cli_md = slurp(source_path("docs/cli.md"));
+    const size_t start = cli_md.find("\n## Command line\n");
+    EXPECT_NE(start, std::string::npos) << "docs/cli.md has no '## Command line' section";
     if (start == std::string::npos) return "";
-    return readme.substr(start, readme.find("\n## ", start + 1) - start);
+    return cli_md.substr(start, cli_md.find("\n## ", start + 1) - start);
 }
 
-TEST(HelpCli, EveryFlagIsInTheTopLevelHelpAndTheReadme) {
+TEST(HelpCli, EveryFlagIsInTheTopLevelHelpAndTheDocs) {
     const auto help = run_firsthit("--help");
     ASSERT_EQ(help.status, 0);
-    const std::string readme = readme_command_line();
+    const std::string docs = docs_command_line();
     for (const Flag& f : all_flags()) {
         for (std::string_view name : {f.name, f.alias}) {
             if (name.empty()) continue;
             EXPECT_NE(help.out.find(std::string(name)), std::string::npos) << name << " is not in firsthit --help";
-            EXPECT_NE(readme.find(std::string(name)), std::string::npos) << name << " is not in the README's command line";
+            EXPECT_NE(docs.find(std::string(name)), std::string::npos) << name << " is not in docs/cli.md";
         }
         EXPECT_NE(help.out.find(std::string(f.help.substr(0, 20))), std::string::npos) << f.name << "'s help text";
     }
     for (const CommandSpec& c : all_commands())
-        EXPECT_NE(readme.find("firsthit " + std::string(c.name)), std::string::npos) << c.name;
+        EXPECT_NE(docs.find("firsthit " + std::string(c.name)), std::string::npos) << c.name;
 }
 
-TEST(HelpCli, TheReadmeSynopsisIsTheHelpsOwn) {
+TEST(HelpCli, TheDocsSynopsisIsTheHelpsOwn) {
     const auto help = run_firsthit("--help");
     const std::string usage = help.out.substr(help.out.find("usage:\n") + 7,
                                               help.out.find("\n\ncommands:") - help.out.find("usage:\n") - 7);
@@ -49,8 +49,8 @@ TEST(HelpCli, TheReadmeSynopsisIsTheHelpsOwn) {
         unindented += usage.substr(at + 2, end - at - 2) + "\n";
         at = end + 1;
     }
-    EXPECT_NE(readme_command_line().find("```\n" + unindented + "```"), std::string::npos)
-        << "the README's synopsis differs from firsthit --help's; paste this:\n" << unindented;
+    EXPECT_NE(docs_command_line().find("```\n" + unindented + "```"), std::string::npos)
+        << "docs/cli.md's synopsis differs from firsthit --help's; paste this:\n" << unindented;
 }
 
 TEST(HelpCli, EachCommandsHelpListsItsFlagsAndOnlyThose) {

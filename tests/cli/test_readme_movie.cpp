@@ -1,7 +1,7 @@
-// The README's "Make your own movie" section, followed literally: its YAML
-// blocks saved under the names their first comment gives, its shell block
-// run line by line in a fresh folder (build/firsthit and scripts/ being this
-// build's), and the results checked with ffprobe.
+// The "Make your own movie" section of docs/guide.md, followed literally: its
+// YAML blocks saved under the names their first comment gives, its shell
+// block run line by line in a fresh folder (build/firsthit and scripts/ being
+// this build's), and the results checked with ffprobe.
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -21,12 +21,12 @@ struct Block {
     std::string text;
 };
 
-// The fenced code blocks of the README's section `title`.
-std::vector<Block> section_blocks(const std::string& title) {
-    const std::string readme = slurp(source_path("README.md"));
-    const size_t start = readme.find("\n## " + title + "\n");
+// The fenced code blocks of the section `title` of the markdown file `doc`.
+std::vector<Block> section_blocks(const std::string& doc, const std::string& title) {
+    const std::string markdown = slurp(source_path(doc));
+    const size_t start = markdown.find("\n## " + title + "\n");
     if (start == std::string::npos) return {};
-    const std::string section = readme.substr(start, readme.find("\n## ", start + 1) - start);
+    const std::string section = markdown.substr(start, markdown.find("\n## ", start + 1) - start);
     std::vector<Block> blocks;
     const std::regex fence("```([a-z]*)\n([^`]*)```");
     for (std::sregex_iterator it(section.begin(), section.end(), fence), end; it != end; ++it)
@@ -40,10 +40,10 @@ std::string ffprobe(const fs::path& video, const std::string& entries) {
         .out;
 }
 
-TEST(ReadmeMovie, TheSectionWorksAsWritten) {
-    const std::vector<Block> blocks = section_blocks("Make your own movie");
+TEST(GuideMovie, TheSectionWorksAsWritten) {
+    const std::vector<Block> blocks = section_blocks("docs/guide.md", "Make your own movie");
     ASSERT_EQ(blocks.size(), 3u) << "expected the scene, the movie and the commands";
-    const fs::path dir = fresh_dir("readme_movie");
+    const fs::path dir = fresh_dir("guide_movie");
     for (const Block& b : blocks) {
         if (b.language != "yaml") continue;
         std::smatch name;  // "# my_scene.yaml: ..."
