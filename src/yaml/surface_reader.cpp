@@ -107,8 +107,12 @@ private:
         const glm::dmat3 a(place.world);
         const double sx = glm::length(a[0]), sy = glm::length(a[1]), sz = glm::length(a[2]);
         if (std::abs(sx - sy) > 1e-9 * sx || std::abs(sx - sz) > 1e-9 * sx)
-            r_.fail(node, "a sphere in a group scaled unevenly would be an ellipsoid: scale group '" +
-                              scene_.groups[size_t(place.group)].name + "' (and those around it) by one number");
+        {
+            const std::string& group = scene_.groups[size_t(place.group)].name;
+            r_.fail(node, "a sphere in a group scaled unevenly would be an ellipsoid: scale the group" +
+                              (group.empty() ? std::string() : " '" + group + "'") +
+                              " (and those around it) by one number");
+        }
         place_surface(scene_, named, place.world);
     }
 

@@ -1,0 +1,239 @@
+// Many objects from the command line: instances, placements files and groups
+// in scene files. Each mistake one line with exit status 2 and nothing
+// written; groups composed as worked out by hand; an animated group or
+// instance rendering the bytes of the static scene with that frame's values
+// written in; an instanced scene the same picture as its copies written as
+// type: mesh; and a movie of moving instances the same bytes for any thread
+// count and shard layout.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "cli/run_command.h"
+#include "geometry/icosphere.h"
+#include "support/png_read.h"
+#include "yaml/scene_loader.h"
+
+namespace fh::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A closed mesh of 80 triangles (radius 1) as an OFF file.
+void write_ball(const fs::path& path) {
+    std::ofstream off(path);
+    const std::vector<Triangle<double>> tris = icosphere(1, 1.0, 0);
+    off << "OFF\n" << 3 * tris.size() << " " << tris.size() << " 0\n";
+    off.precision(17);
+    for (const auto& t : tris)
+        for (const dvec3& v : {t.v0, t.v1, t.v2}) off << v.x << " " << v.y << " " << v.z << "\n";
+    for (size_t i = 0; i < tris.size(); ++i) off << "3 " << 3 * i << " " << 3 * i + 1 << " " << 3 * i + 2 << "\n";
+}
+
+const std::string kHead =
+    "materials:\n"
+    "  grey: {color: [200, 200, 200], ambient: 0.1, diffuse: 0.9, specular: 0.4, phong_exponent: 20}\n"
+    "  red: {color: [220, 40, 30], ambient: 0.1, diffuse: 0.9, specular: 0, phong_exponent: 1}\n"
+    "  floor: {color: [140, 170, 200], ambient: 0.1, diffuse: 0.9, specular: 0, phong_exponent: 1}\n"
+    "lights:\n"
+    "  ambient: {type: ambient, color: [255, 255, 255], intensity: 0.006}\n"
+    "  sun: {type: directional, color: [255, 255, 255], intensity: 0.004, direction: [-1, 1, -2]}\n"
+    "cameras:\n"
+    "  front: {type: perspective, width: 96, height: 72, view_point: [0, -12, 6], look_at: [0, 12, -6],\n"
+    "          up: [0, 0, 1], projection_distance: 10}\n";
+
+// A folder with the ball, a placements file and scene.yaml = kHead + body.
+fs::path scene_dir(const std::string& name, const std::string& body, const std::string& csv = "") {
+    const fs::path dir = fresh_dir(name);
+    write_ball(dir / "ball.off");
+    if (!csv.empty()) std::ofstream(dir / "rows.csv") << csv;
+    std::ofstream(dir / "scene.yaml") << kHead << body;
+    return dir;
+}
+
+// The one error line a scene gives (exit status 2, nothing written), with
+// the folder shown as DIR.
+std::string error_of(const std::string& name, const std::string& body, const std::string& csv = "") {
+    const fs::path dir = scene_dir(name, body, csv);
+    const auto r = run_firsthit("render " + (dir / "scene.yaml").string() + " -o " + (dir / "out.png").string());
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    std::string line = r.err.substr(0, r.err.find('\n'));
+    for (size_t at; (at = line.find(dir.string())) != std::string::npos;) line.replace(at, dir.string().size(), "DIR");
+    return line;
+}
+
+const std::string kMeshes = "meshes:\n  ball: {file: ball.off}\n";
+
+TEST(InstancesCli, EachMistakeIsOneLineAndNothingWritten) {
+    EXPECT_EQ(error_of("bad_mesh_name", kMeshes + "surfaces:\n  - {type: instance, mesh: bal, material: grey}\n"),
+              "DIR/scene.yaml:14:28: error: undefined mesh 'bal' (did you mean 'ball'?)");
+    EXPECT_EQ(error_of("no_meshes", "surfaces:\n  - {type: instance, mesh: ball, material: grey}\n"),
+              "DIR/scene.yaml:12:28: error: undefined mesh 'ball' (meshes are named in the scene's 'meshes:' section)");
+    EXPECT_EQ(error_of("short_row", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
+                                              "placements: rows.csv}\n",
+                       "tx,ty,tz,scale\n0,0,0,1\n1,2\n"),
+              "DIR/rows.csv:3:4: error: expected 4 values as the header names, got 2");
+    EXPECT_EQ(error_of("word_row", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
+                                             "placements: rows.csv}\n",
+                       "tx,ty,tz\n0,0,0\n\n1,two,3\n"),
+              "DIR/rows.csv:4:3: error: 'ty' must be a number, got 'two'");
+    EXPECT_EQ(error_of("inf_row", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
+                                            "placements: rows.csv}\n",
+                       "tx, ty, tz\n0, 0, inf\n"),
+              "DIR/rows.csv:2:7: error: 'tz' must be finite, got inf");
+    EXPECT_EQ(error_of("zero_row", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
+                                             "placements: rows.csv}\n",
+                       "scale,tx,ty,tz\n0,1,2,3\n"),
+              "DIR/rows.csv:2:1: error: 'scale' must not be 0");
+    EXPECT_EQ(error_of("bad_column", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
+                                               "placements: rows.csv}\n",
+                       "tx,ty,tz,scael\n0,1,2,3\n"),
+              "DIR/rows.csv:1:10: error: unknown column 'scael' (did you mean 'scale'?); the columns are tx, ty, "
+              "tz, scale, axis_x, axis_y, axis_z, degrees");
+    EXPECT_EQ(error_of("zero_scale", kMeshes + "surfaces:\n  - {type: instance, mesh: ball, material: grey, "
+                                               "transform: {scale: [1, 0, 1]}}\n"),
+              "DIR/scene.yaml:14:69: error: 'scale' must not be 0 (a number, or one per axis; a negative one mirrors)");
+    EXPECT_EQ(error_of("nan_scale", kMeshes + "surfaces:\n  - {type: instance, mesh: ball, material: grey, "
+                                              "transform: {scale: .nan}}\n"),
+              "DIR/scene.yaml:14:69: error: 'scale' must be finite");
+    // Fine alone, singular together: (1e-60 x 1e-60)^3 underflows to 0.
+    EXPECT_EQ(error_of("singular", kMeshes + "surfaces:\n  - {type: group, transform: {scale: 1e-60}, surfaces: "
+                                             "[{type: instance, mesh: ball, material: grey, transform: {scale: 1e-60}}]}\n"),
+              "DIR/scene.yaml:14:113: error: the transform is singular (it flattens space: no inverse)");
+    EXPECT_EQ(error_of("twice", kMeshes + "surfaces:\n  - {type: instance, name: a, mesh: ball, material: grey}\n"
+                                          "  - {type: group, name: a}\n"),
+              "DIR/scene.yaml:15:25: error: a second surface named 'a'");
+    EXPECT_EQ(error_of("uneven_sphere", "surfaces:\n  - {type: group, transform: {scale: [1, 2, 1]}, surfaces: "
+                                        "[{type: sphere, center: [0, 0, 0], radius: 1, material: red}]}\n"),
+              "DIR/scene.yaml:12:61: error: a sphere in a group scaled unevenly would be an ellipsoid: scale the "
+              "group (and those around it) by one number");
+}
+
+// Nested groups, placed as worked out by hand: a group moved by (10, 0, 0)
+// and turned 90 degrees about z holds a group scaled by 2 holding an
+// instance moved by (1, 0, 0), a sphere and a triangle.
+TEST(InstancesCli, GroupsComposeTheirTransformsOutwards) {
+    const fs::path dir = scene_dir("groups_by_hand", kMeshes +
+        "surfaces:\n"
+        "  - {type: group, name: outer, transform: {rotate: {axis: [0, 0, 1], degrees: 90}, translate: [10, 0, 0]},\n"
+        "     surfaces: [{type: group, name: inner, transform: {scale: 2}, surfaces: [\n"
+        "       {type: instance, name: b, mesh: ball, material: grey, transform: {translate: [1, 0, 0]}},\n"
+        "       {type: sphere, name: s, center: [0, 1, 0], radius: 0.5, material: red},\n"
+        "       {type: triangle, vertices: [[1, 0, 0], [0, 1, 0], [0, 0, 1]], material: red}]}]}\n");
+    const Scene s = load_scene((dir / "scene.yaml").string()).scene;
+    ASSERT_EQ(s.instances.size(), 1u);
+    ASSERT_EQ(s.groups.size(), 2u);
+    EXPECT_EQ(s.groups[1].parent, 0);
+    // p -> R90(2 (p + (1, 0, 0))) + (10, 0, 0): the origin goes to (10, 2, 0),
+    // (1, 0, 0) to (10, 4, 0), (0, 1, 0) to (8, 2, 0).
+    const glm::dmat4& m = s.instances[0].to_world;
+    auto placed = [&](dvec3 p) { return dvec3(m * glm::dvec4(p, 1.0)); };
+    auto near = [](dvec3 a, dvec3 b) { return glm::length(a - b) < 1e-12; };
+    EXPECT_TRUE(near(placed({0, 0, 0}), {10, 2, 0}));
+    EXPECT_TRUE(near(placed({1, 0, 0}), {10, 4, 0}));
+    EXPECT_TRUE(near(placed({0, 1, 0}), {8, 2, 0}));
+    // The sphere: centre (0, 1, 0) -> R90(0, 2, 0) + (10, 0, 0) = (8, 0, 0); radius 2 x 0.5.
+    EXPECT_TRUE(near(s.spheres()[0].center, {8, 0, 0}));
+    EXPECT_NEAR(s.spheres()[0].radius, 1.0, 1e-12);
+    // The triangle's corners: (1,0,0) -> (10,2,0); (0,1,0) -> (8,0,0); (0,0,1) -> (10,0,2).
+    EXPECT_TRUE(near(s.triangles[0].v0, {10, 2, 0}));
+    EXPECT_TRUE(near(s.triangles[0].v1, {8, 0, 0}));
+    EXPECT_TRUE(near(s.triangles[0].v2, {10, 0, 2}));
+}
+
+fs::path render(const fs::path& file, const std::string& extra, const std::string& out_name) {
+    const fs::path out = file.parent_path() / out_name;
+    const auto r = run_firsthit("render " + file.string() + " " + extra + " --quiet -o " + out.string());
+    EXPECT_EQ(r.status, 0) << r.err;
+    return out;
+}
+
+const std::string kAnimatedScene = kMeshes +
+    "surfaces:\n"
+    "  - {type: plane, normal: [0, 0, 1], distance: -1, material: floor}\n"
+    "  - {type: group, name: cart, transform: {translate: [-2, 0, 0]}, surfaces: [\n"
+    "      {type: instance, name: wheel, mesh: ball, material: grey, transform: {translate: [0, 1, 0]}},\n"
+    "      {type: sphere, center: [0, -1, 0], radius: 0.8, material: red},\n"
+    "      {type: mesh, file: ball.off, material: grey, transform: {scale: 0.5, translate: [0, 0, 1.5]}}]}\n"
+    "  - {type: instance, name: lone, mesh: ball, material: red, transform: {translate: [3, 0, 0]}}\n";
+
+// A movie moving the group and one instance: frame 10 is the static scene
+// with frame 10's values written in, to the byte.
+TEST(InstancesCli, AnimatedGroupsAndInstancesAreTheStaticSceneAtEachKey) {
+    const fs::path dir = scene_dir("animated_groups", kAnimatedScene);
+    std::ofstream(dir / "movie.yaml")
+        << "scene: scene.yaml\ncamera: front\nfps: 10\nseconds: 2\nanimate:\n"
+           "  surfaces.cart.transform.translate: {keyframes: [{frame: 0, value: [-2, 0, 0]}, {frame: 10, value: [1, 2, 0.5]}]}\n"
+           "  surfaces.cart.transform.rotate.axis: [0, 0, 1]\n"
+           "  surfaces.cart.transform.rotate.degrees: {keyframes: [{frame: 0, value: 0}, {frame: 10, value: 30}]}\n"
+           "  surfaces.lone.transform.scale: {keyframes: [{frame: 0, value: 1}, {frame: 10, value: [1, 2, -0.5]}]}\n";
+    std::string moved = kAnimatedScene;
+    moved.replace(moved.find("transform: {translate: [-2, 0, 0]}"), 34,
+                  "transform: {translate: [1, 2, 0.5], rotate: {axis: [0, 0, 1], degrees: 30}}");
+    moved.replace(moved.find("transform: {translate: [3, 0, 0]}"), 33,
+                  "transform: {translate: [3, 0, 0], scale: [1, 2, -0.5]}");
+    std::ofstream(dir / "moved.yaml") << kHead << moved;
+    const fs::path frame10 = render(dir / "movie.yaml", "--frame 10", "frame10.png");
+    const fs::path still = render(dir / "moved.yaml", "", "still.png");
+    EXPECT_EQ(slurp(frame10), slurp(still));
+    // Frame 0 is the file's scene, and the movie did move things.
+    EXPECT_EQ(slurp(render(dir / "movie.yaml", "--frame 0", "frame0.png")), slurp(render(dir / "scene.yaml", "", "s.png")));
+    EXPECT_NE(slurp(frame10), slurp(dir / "s.png"));
+}
+
+// Twelve copies as instances and as type: mesh surfaces: the same picture
+// but for rounding (the instances' triangles are tested in their own space).
+TEST(InstancesCli, InstancesLookLikeTheirCopiesAsMeshes) {
+    std::string instances = kMeshes + "surfaces:\n  - {type: plane, normal: [0, 0, 1], distance: -1, material: floor}\n";
+    std::string meshes = "surfaces:\n  - {type: plane, normal: [0, 0, 1], distance: -1, material: floor}\n";
+    for (int i = 0; i < 12; ++i) {
+        const std::string t = "transform: {scale: [" + std::to_string(0.6 + 0.05 * i) + ", 0.8, " +
+                              (i % 2 ? "-" : "") + "0.7], rotate: {axis: [1, 1, " + std::to_string(i) +
+                              "], degrees: " + std::to_string(17 * i) + "}, translate: [" +
+                              std::to_string(-6 + 1.1 * i) + ", " + std::to_string(i % 3) + ", 0]}";
+        instances += "  - {type: instance, mesh: ball, material: grey, " + t + "}\n";
+        meshes += "  - {type: mesh, file: ball.off, material: grey, smooth: false, " + t + "}\n";
+    }
+    const fs::path dir = scene_dir("instances_vs_meshes", instances);
+    std::ofstream(dir / "meshes.yaml") << kHead << meshes;
+    for (const char* precision : {"float", "double"}) {
+        const std::string flags = std::string("--precision ") + precision + " --resolution 400x300";
+        const Image a = read_png(render(dir / "scene.yaml", flags, "a.png").string());
+        const Image b = read_png(render(dir / "meshes.yaml", flags, "b.png").string());
+        ASSERT_GT(a.width, 0);
+        const ImageDiff d = compare(a, b);
+        EXPECT_LE(double(d.differing), 0.001 * 3 * 400 * 300) << precision << ": " << d.differing << " channels";
+    }
+}
+
+// Moving instances in a movie: the same bytes for any --threads and shards.
+TEST(InstancesCli, MovingInstancesAreTheSameBytesForAnyThreadsAndShards) {
+    const fs::path dir = scene_dir("instances_determinism", kAnimatedScene);
+    std::ofstream(dir / "movie.yaml")
+        << "scene: scene.yaml\ncamera: front\nfps: 4\nseconds: 2\nanimate:\n"
+           "  surfaces.cart.transform.rotate.axis: [0, 0, 1]\n"
+           "  surfaces.cart.transform.rotate.degrees: {keyframes: [{frame: 0, value: 0}, {frame: 7, value: 90}]}\n"
+           "  surfaces.wheel.transform.translate: {keyframes: [{frame: 0, value: [0, 1, 0]}, {frame: 7, value: [0, 2, 1]}]}\n";
+    auto frames = [&](const std::string& out, const std::string& extra) {
+        const auto r = run_firsthit("frames " + (dir / "movie.yaml").string() + " --quiet --out " +
+                                    (dir / out).string() + " " + extra);
+        ASSERT_EQ(r.status, 0) << r.err;
+    };
+    frames("ref", "--threads 1");
+    frames("threads", "--threads 3");
+    for (int k = 0; k < 3; ++k) frames("shards", "--shard " + std::to_string(k) + "/3 --threads 2");
+    for (int i = 0; i < 8; ++i) {
+        const std::string name = "frame_000" + std::to_string(i) + ".png";
+        const std::string ref = slurp(dir / "ref" / name);
+        ASSERT_FALSE(ref.empty()) << name;
+        EXPECT_EQ(slurp(dir / "threads" / name), ref) << name;
+        EXPECT_EQ(slurp(dir / "shards" / name), ref) << name;
+    }
+    EXPECT_NE(slurp(dir / "ref" / "frame_0000.png"), slurp(dir / "ref" / "frame_0007.png"));
+}
+
+}  // namespace
+}  // namespace fh::test
