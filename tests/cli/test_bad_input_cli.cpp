@@ -138,7 +138,7 @@ TEST(BadInputCli, SceneFileMistakes) {
 TEST(BadInputCli, WholeFileMistakes) {
     std::string deep = "a: " + std::string(5000, '[') + std::string(5000, ']') + "\n";
     std::string big = kGoodScene;
-    while (big.size() < 5'000'000) big += "# a comment to make the file several megabytes long .........\n";
+    while (big.size() < 20'000'000) big += "# a comment to make the file several megabytes long .........\n";
     const Case cases[] = {
         {"empty", {{"bad.yaml", ""}}, render("bad.yaml"), "DIR/bad.yaml: error: empty scene file"},
         {"binary", {{"bad.yaml", std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16)}}, render("bad.yaml"),
@@ -149,7 +149,7 @@ TEST(BadInputCli, WholeFileMistakes) {
          "DIR/bad.yaml:1:67: error: maps and lists nested more than 64 levels deep"},
         {"several_mb", {{"bad.yaml", big}}, render("bad.yaml"),
          "DIR/bad.yaml: error: file too large: " + std::to_string(big.size()) +
-             " bytes (the limit is 1048576 bytes, 1 MiB)"},
+             " bytes (the limit is 16777216 bytes, 16 MiB)"},
         {"directory", {}, render("folder.yaml"), "DIR/folder.yaml: error: cannot read file: is a directory"},
         {"missing", {}, render("nothing.yaml"), "DIR/nothing.yaml: error: cannot read file: no such file or directory"},
         {"device", {}, "render /dev/zero -o DIR/out.png", "/dev/zero: error: cannot read file: not a regular file"},

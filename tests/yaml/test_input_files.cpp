@@ -45,18 +45,18 @@ TEST(InputFiles, DeviceOrPipeIsNotRead) {
 }
 
 TEST(InputFiles, FileOfSeveralMegabytesIsRefusedUnread) {
-    // 5 MB of valid YAML: refused by its size, before parsing.
+    // 20 MB of valid YAML: refused by its size, before parsing.
     std::string text = kCamera;
-    while (text.size() < 5'000'000) text += "# padding padding padding padding padding padding padding\n";
+    while (text.size() < 20'000'000) text += "# padding padding padding padding padding padding padding\n";
     const auto start = std::chrono::steady_clock::now();
     EXPECT_EQ(scene_error(text), "FILE: error: file too large: " + std::to_string(text.size()) +
-                                     " bytes (the limit is 1048576 bytes, 1 MiB)");
+                                     " bytes (the limit is 16777216 bytes, 16 MiB)");
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
     EXPECT_THROW(load_scene_from_string(text, "x.yaml"), InputError);
 }
 
 TEST(InputFiles, JustUnderTheLimitLoads) {
-    // Exactly 1 MiB loads; one byte more does not.
+    // Exactly 16 MiB loads; one byte more does not.
     std::string text = kCamera;
     const std::string pad = "# padding\n";
     while (text.size() + pad.size() <= kMaxInputBytes) text += pad;
@@ -64,7 +64,7 @@ TEST(InputFiles, JustUnderTheLimitLoads) {
     ASSERT_EQ(text.size(), kMaxInputBytes);
     const Scene s = load_scene(write_temp_file("big_ok.yaml", text)).scene;
     EXPECT_EQ(s.cameras.size(), 1u);
-    EXPECT_EQ(scene_error(text + "\n"), "FILE: error: file too large: 1048577 bytes (the limit is 1048576 bytes, 1 MiB)");
+    EXPECT_EQ(scene_error(text + "\n"), "FILE: error: file too large: 16777217 bytes (the limit is 16777216 bytes, 16 MiB)");
 }
 
 TEST(InputFiles, BinaryFile) {
