@@ -32,6 +32,9 @@ int run_bench(const Args& args) {
               << "prepare_ms: " << timings.prepare_ms << "\n"
               << "build_ms: " << timings.bvh_build_ms << "\n"
               << "bvh_nodes: " << timings.bvh_nodes << "\n"
+              << "instances: " << timings.instances << "\n";
+    if (timings.frame_update_ms >= 0) std::cout << "frame_update_ms: " << timings.frame_update_ms << "\n";
+    std::cout
               << "ms_per_frame: " << ms_median << "\n"
               << "ms_min: " << *ms_min << "\n"
               << "ms_max: " << *ms_max << "\n"

@@ -1,5 +1,7 @@
 #include "pipeline/frame_pipeline.h"
 
+#include <algorithm>
+
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
@@ -128,6 +130,29 @@ StillResult render_to_file(const Job& job, const std::string& path, int threads)
     return r;
 }
 
+namespace {
+
+// The median of `runs` updates to the job's frame from the movie's first
+// state, as render_frames makes them (one worker's scene, reused).
+double time_frame_update(const Job& job, int runs, ThreadPool& pool) {
+    const Movie& movie = job.movie;
+    const PreparedScene prepared(movie.scene, movie.settings, &pool);
+    const ShapeChanges changes = movie.shape_changes();
+    Scene scene = movie.scene;
+    std::vector<double> ms;
+    for (int i = 0; i <= runs; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        scene_at(movie, job.frame, scene);
+        const PreparedScene frame = prepared.for_frame(scene, changes);
+        const double took = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        if (i > 0) ms.push_back(took);  // the first warms up
+    }
+    std::sort(ms.begin(), ms.end());
+    return ms[ms.size() / 2];
+}
+
+}  // namespace
+
 FrameTimings time_frame(const Job& job, int runs, int threads) {
     ThreadPool pool(threads);
     FrameTimings t;
@@ -136,11 +161,13 @@ FrameTimings time_frame(const Job& job, int runs, int threads) {
     t.prepare_ms = prepared.build_ms();
     t.bvh_build_ms = prepared.bvh_build_ms();
     t.bvh_nodes = prepared.bvh_nodes();
+    t.instances = prepared.instances();
     t.last = prepared.render(job.camera, &pool);  // warm-up
     for (int i = 0; i < runs; ++i) {
         t.last = prepared.render(job.camera, &pool);
         t.ms.push_back(t.last.render_ms);
     }
+    if (job.frame >= 0 && job.movie.scene_changes()) t.frame_update_ms = time_frame_update(job, runs, pool);
     return t;
 }
 

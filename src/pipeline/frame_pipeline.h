@@ -87,6 +87,12 @@ struct FrameTimings {
     double prepare_ms = 0;    // flattening the scene and building its BVH, once
     double bvh_build_ms = 0;  // of which the BVH
     int bvh_nodes = 0;
+    size_t instances = 0;     // the second level's
+    // A movie that animates its scene: what the pipeline does before each
+    // frame -- the frame's values written (scene_at) and the prepared scene
+    // updated (for_frame: moved shapes refitted, moved instances placed) --
+    // median over the runs; -1 for a still.
+    double frame_update_ms = -1;
     std::vector<double> ms;   // rendering only
     FrameResult last;
     int threads = 0;

@@ -87,9 +87,12 @@ struct alignas(8 * sizeof(T)) WalkNode {
 static_assert(kMaxLeafSize < 16, "a leaf's count takes 4 bits of WalkNode::packed_");
 
 // The walk's copy of a hierarchy over primitive ids (empty for an empty one).
-// The leaves that hold a run of triangles number their blocks 0, 1, ... in order.
+// The leaves that hold a run of triangles number their blocks 0, 1, ... in
+// order. from: receives, for each walk node, the BVH node it copies (so a
+// refit can update the boxes alone: refit_walk_boxes).
 template <typename T>
-BigArray<WalkNode<T>> walk_nodes_of(const Bvh& bvh, const PrimitiveIds& ids) {
+BigArray<WalkNode<T>> walk_nodes_of(const Bvh& bvh, const PrimitiveIds& ids,
+                                    std::vector<std::int32_t>* from = nullptr) {
     BigArray<WalkNode<T>> out;
     int blocks = 0;
     if (bvh.empty()) return out;
@@ -106,6 +109,7 @@ BigArray<WalkNode<T>> walk_nodes_of(const Bvh& bvh, const PrimitiveIds& ids) {
         const int index = int(out.size());
         if (t.parent >= 0) out[size_t(t.parent)].set_second_child(index);
         const BvhNode& n = bvh.nodes[size_t(t.node)];
+        if (from) from->push_back(t.node);
         const NodeBox<T> box{{T(n.lo[0]), T(n.lo[1]), T(n.lo[2])}, {T(n.hi[0]), T(n.hi[1]), T(n.hi[2])}};
         if (n.leaf()) {
             const std::int32_t* p = &bvh.prims[size_t(n.first)];
@@ -120,6 +124,16 @@ BigArray<WalkNode<T>> walk_nodes_of(const Bvh& bvh, const PrimitiveIds& ids) {
         }
     }
     return out;
+}
+
+// After refit_bvh: each walk node's box anew from the BVH node it copies
+// (walk_nodes_of's `from`); the rest of the walk is the same.
+template <typename T>
+void refit_walk_boxes(BigArray<WalkNode<T>>& walk, const Bvh& bvh, const std::vector<std::int32_t>& from) {
+    for (size_t k = 0; k < walk.size(); ++k) {
+        const BvhNode& n = bvh.nodes[size_t(from[k])];
+        walk[k].box = {{T(n.lo[0]), T(n.lo[1]), T(n.lo[2])}, {T(n.hi[0]), T(n.hi[1]), T(n.hi[2])}};
+    }
 }
 
 // Per lane: the ray meets the node's box at a distance in [0, t_max].

@@ -2,7 +2,6 @@
 
 #include <chrono>
 
-#include <glm/gtc/matrix_inverse.hpp>
 
 namespace fh {
 
@@ -17,15 +16,15 @@ Scene mesh_scene(const Mesh& mesh) {
     return s;
 }
 
-// The box around the mesh's positions placed by `to_world`: its eight
-// corners carried over, padded like every primitive's box (flat_geometry).
+// The box around a box placed by `to_world`: its centre carried over, its
+// half-extent through the absolute values of the linear part (the eight
+// corners' box, to rounding), padded like every primitive's box.
 Aabb world_box(const Aabb& object, const glm::dmat4& to_world) {
-    Aabb b;
-    for (int c = 0; c < 8; ++c) {
-        const dvec3 corner((c & 1) ? object.hi.x : object.lo.x, (c & 2) ? object.hi.y : object.lo.y,
-                           (c & 4) ? object.hi.z : object.lo.z);
-        b.grow(dvec3(to_world * glm::dvec4(corner, 1.0)));
-    }
+    const dvec3 center = object.center(), half = 0.5 * (object.hi - object.lo);
+    const dvec3 c = dvec3(to_world * glm::dvec4(center, 1.0));
+    const glm::dmat3 a(to_world);
+    const dvec3 e = glm::abs(a[0]) * half.x + glm::abs(a[1]) * half.y + glm::abs(a[2]) * half.z;
+    Aabb b{c - e, c + e};
     const double pad = 1e-5 * (glm::length(b.hi - b.lo) + std::max(glm::length(b.lo), glm::length(b.hi)));
     b.lo -= pad;
     b.hi += pad;
@@ -38,14 +37,19 @@ Aabb mesh_box(const Mesh& mesh) {
     return b;
 }
 
+// An instance's maps in T. One 3 x 3 inverse serves both ways: the inverse
+// of p -> A p + b is p -> A^-1 (p - b), and normals go by A^-T.
 template <typename T>
 FlatInstance<T> flat_instance(const Instance& i) {
-    const glm::dmat4 inverse = glm::inverse(i.to_world);
-    const glm::dmat3 normals = glm::inverseTranspose(glm::dmat3(i.to_world));
+    const glm::dmat3 a(i.to_world);
+    const glm::dmat3 inverse = glm::inverse(a);
+    const dvec3 b(i.to_world[3]);
+    glm::dmat4 to_object(inverse);
+    to_object[3] = glm::dvec4(-(inverse * b), 1.0);
     FlatInstance<T> f;
-    f.to_object = AffineMap<T>::from(inverse);
+    f.to_object = AffineMap<T>::from(to_object);
     f.to_world = AffineMap<T>::from(i.to_world);
-    f.normal_to_world = AffineMap<T>::from(glm::dmat4(normals));
+    f.normal_to_world = AffineMap<T>::from(glm::dmat4(glm::transpose(inverse)));
     f.mesh = i.mesh;
     f.material = i.material;
     return f;
@@ -54,7 +58,7 @@ FlatInstance<T> flat_instance(const Instance& i) {
 // The instances' matrices and boxes, and the top BVH: built anew, or (same
 // count) refitted over the tree `previous` has.
 template <typename T>
-void place_instances(const Scene& scene, const std::vector<Aabb>& mesh_boxes, const Bvh* previous,
+void place_instances(const Scene& scene, const std::vector<Aabb>& mesh_boxes, const InstanceSet<T>* previous,
                      InstanceSet<T>& set, ThreadPool* pool) {
     const auto start = std::chrono::steady_clock::now();
     set.instances.clear();
@@ -65,14 +69,17 @@ void place_instances(const Scene& scene, const std::vector<Aabb>& mesh_boxes, co
         set.instances.push_back(flat_instance<T>(i));
         boxes.push_back(world_box(mesh_boxes[size_t(i.mesh)], i.to_world));
     }
-    if (previous && previous->prims.size() == boxes.size()) {
-        set.bvh = *previous;
+    if (previous && previous->bvh.prims.size() == boxes.size()) {
+        set.bvh = previous->bvh;
         refit_bvh(set.bvh, boxes);
+        set.walk_nodes = previous->walk_nodes;
+        set.walk_from = previous->walk_from;
+        refit_walk_boxes(set.walk_nodes, set.bvh, set.walk_from);
     } else {
         set.bvh = build_bvh(boxes, pool, 1);
+        // Every leaf lists its instance (no triangle runs at this level).
+        set.walk_nodes = walk_nodes_of<T>(set.bvh, PrimitiveIds{int(boxes.size()), 0, 0}, &set.walk_from);
     }
-    // Every leaf lists its instance (no triangle runs at this level).
-    set.walk_nodes = walk_nodes_of<T>(set.bvh, PrimitiveIds{int(boxes.size()), 0, 0});
     set.update_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -95,7 +102,7 @@ std::shared_ptr<const InstanceSet<T>> InstanceSet<T>::build(const Scene& scene, 
                                             FlatGeometry<T>::build(mesh_scene(*scene.meshes[m].mesh), pool))
                                       : nullptr);
     set->mesh_boxes = boxes_of_meshes(scene);
-    place_instances(scene, set->mesh_boxes, nullptr, *set, pool);
+    place_instances<T>(scene, set->mesh_boxes, nullptr, *set, pool);
     return set;
 }
 
@@ -104,7 +111,7 @@ std::shared_ptr<const InstanceSet<T>> InstanceSet<T>::moved(const Scene& moved, 
     auto set = std::make_shared<InstanceSet<T>>();
     set->meshes = meshes;
     set->mesh_boxes = mesh_boxes;
-    place_instances(moved, set->mesh_boxes, &bvh, *set, pool);
+    place_instances(moved, set->mesh_boxes, this, *set, pool);
     return set;
 }
 

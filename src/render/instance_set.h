@@ -62,6 +62,7 @@ struct InstanceSet {
     BigArray<FlatInstance<T>> instances;
     Bvh bvh;  // over the instances' world boxes (a leaf: one instance)
     BigArray<WalkNode<T>> walk_nodes;
+    std::vector<std::int32_t> walk_from;  // each walk node's BVH node (walk_nodes_of)
     double update_ms = 0;  // the last build of the instances and their BVH (not the meshes)
 
     bool empty() const { return instances.empty(); }
