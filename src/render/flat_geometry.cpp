@@ -125,7 +125,11 @@ constexpr int kLeafTriangles = std::min(TriangleBlock<T>::kColumns, kMaxLeafSize
 // The walk's nodes and blocks over g.bvh (triangles already in leaf order).
 template <typename T>
 void prepare_walk(FlatGeometry<T>& g) {
-    g.walk_nodes = walk_nodes_of<T>(g.bvh, g.ids);
+    std::vector<std::int32_t> from;
+    g.walk_nodes = walk_nodes_of<T>(g.bvh, g.ids, &from);
+    std::vector<std::int32_t> walk_of(g.bvh.nodes.size(), -1);
+    for (size_t k = 0; k < from.size(); ++k) walk_of[size_t(from[k])] = std::int32_t(k);
+    g.wide = collapse(g.bvh, walk_of);
     g.blocks.clear();
     if constexpr (FlatGeometry<T>::kPackedRows) {
         // A vector of NaN past the last row: the one-ray test reads that far.

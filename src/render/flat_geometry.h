@@ -15,6 +15,7 @@
 #include "geometry/triangle_block.h"
 #include "render/bvh_traversal.h"
 #include "render/primitive_ids.h"
+#include "render/wide_bvh.h"
 #include "scene/scene.h"
 
 namespace fh {
@@ -105,6 +106,7 @@ struct FlatGeometry {
     // Over every primitive but the planes, by id.
     Bvh bvh;
     BigArray<WalkNode<T>> walk_nodes;  // bvh.nodes as the walk reads them
+    WideBvh wide;                      // the same tree eight children a node, for rays alone
     // The triangles of the leaves that hold only triangles, a block a leaf
     // (in double; float packs them in packed_rows below).
     BigArray<TriangleBlock<T>> blocks;

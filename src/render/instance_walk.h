@@ -10,6 +10,7 @@
 
 #include "render/instance_set.h"
 #include "render/packet_intersect.h"
+#include "render/ray_walk.h"
 
 namespace fh {
 
@@ -19,6 +20,38 @@ template <typename T>
 inline constexpr T kInstanceReach = T(1) + 4 * std::numeric_limits<T>::epsilon();
 
 inline constexpr int kNoInstance = -1;  // a hit on the world's own primitives
+
+// Up to this many rays of a packet entering an instance walk its mesh one
+// by one (render/ray_walk.h), eight boxes a vector; more walk it together.
+template <typename T>
+inline constexpr int kAlone = 4;
+
+// The nearest hits of the active rays, one ray at a time, as closest_hits_within gives them.
+template <typename T>
+FH_HOT_INLINE HitLanes<T> hits_one_by_one(const FlatGeometry<T>& mesh, const RayPacket<T>& ray,
+                                          const LaneInts<T>& active, const Lanes<T>& t_max) {
+    HitLanes<T> h{t_max, LaneInts<T>{} + kNoHit};
+    const RayBasis<T> basis(ray);
+    for_each_lane(active, [&](int lane) FH_HOT_LAMBDA {
+        const RayHit<T> r = nearest_on_ray(mesh, basis, lane, t_max[lane]);
+        if (r.prim != kNoHit) h.t[lane] = r.t, h.prim[lane] = r.prim;
+        return false;
+    });
+    return h;
+}
+
+// Whether each active ray is blocked below its t_max, one ray at a time.
+template <typename T>
+FH_HOT_INLINE LaneInts<T> blocked_one_by_one(const FlatGeometry<T>& mesh, const RayPacket<T>& ray,
+                                             const Lanes<T>& t_max, const LaneInts<T>& active) {
+    LaneInts<T> blocked{};
+    const RayBasis<T> basis(ray);
+    for_each_lane(active, [&](int lane) FH_HOT_LAMBDA {
+        if (blocked_on_ray(mesh, basis, lane, t_max[lane])) blocked[lane] = -1;
+        return false;
+    });
+    return blocked;
+}
 
 // Hits on the set's instances nearer than h's (the world's), merged into
 // h; returns each lane's instance, or kNoInstance.
@@ -33,7 +66,10 @@ FH_HOT_INLINE LaneInts<T> closest_instance_hits(const InstanceSet<T>& set, const
             Lanes<T> scale;
             const RayPacket<T> local = instance.enter(ray, scale);
             const Lanes<T> limit = select(entering, h.t * scale * kInstanceReach<T>, splat(T(0)));
-            const HitLanes<T> m = closest_hits_within(*set.meshes[size_t(instance.mesh)], local, entering, limit);
+            const FlatGeometry<T>& mesh = *set.meshes[size_t(instance.mesh)];
+            const HitLanes<T> m = count(entering) <= kAlone<T> && !mesh.wide.empty()
+                                      ? hits_one_by_one(mesh, local, entering, limit)
+                                      : closest_hits_within(mesh, local, entering, limit);
             const Lanes<T> t = m.t / scale;
             const LaneInts<T> tie = (t == h.t) & ((on > i) | ((on == i) & (h.prim > m.prim)));
             const LaneInts<T> nearer = (m.prim != kNoHit) & ((t < h.t) | tie);
@@ -58,7 +94,10 @@ FH_HOT_INLINE LaneInts<T> occluded_by_instances(const InstanceSet<T>& set, const
             Lanes<T> scale;
             const RayPacket<T> local = instance.enter(ray, scale);
             const LaneInts<T> asking = entering & (t_max > T(0));
-            blocked |= occluded(*set.meshes[size_t(instance.mesh)], local, t_max * scale, asking);
+            const FlatGeometry<T>& mesh = *set.meshes[size_t(instance.mesh)];
+            blocked |= count(asking) <= kAlone<T> && !mesh.wide.empty()
+                           ? blocked_one_by_one(mesh, local, t_max * scale, asking)
+                           : occluded(mesh, local, t_max * scale, asking);
             t_max = select(blocked, splat(T(0)), t_max);
             if (all(blocked | ~active)) return true;
         }
