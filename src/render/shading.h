@@ -143,16 +143,33 @@ private:
         for_each_distinct(h.prim, hit, [&](int prim, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
             Vec3Lanes<T> point, normal, shading;
             geometry_.project(prim, p, point, normal, shading);
-            put(s.point, point, lanes, first);
-            put(geometric, normal, lanes, first);
-            put(s.normal, shading, lanes, first);
-            const int material = geometry_.surfaces[size_t(prim)].material;
-            const MaterialShading<T>& m = scene_.shading[size_t(material)];
-            put(ambient, Vec3Lanes<T>::splat(m.ambient), lanes, first);
-            put(s.reflectivity, splat(m.reflectivity), lanes, first);
-            put(s.glazed, m.glazed ? lanes : LaneInts<T>{}, lanes, first);
-            put(s.material, LaneInts<T>{} + material, lanes, first);
+            put_hit(point, normal, shading, geometry_.surfaces[size_t(prim)].material, lanes, first, s, geometric,
+                    ambient);
         });
+        finish_surfaces(ray, hit, geometric, ambient, s, local);
+    }
+
+    // One primitive's point, normals and material terms into the lanes that
+    // hit it (surfaces).
+    template <typename First>
+    FH_HOT_INLINE void put_hit(const Vec3Lanes<T>& point, const Vec3Lanes<T>& normal, const Vec3Lanes<T>& shading,
+                               int material, const LaneInts<T>& lanes, First first, SurfaceLanes& s,
+                               Vec3Lanes<T>& geometric, ColorLanes<T>& ambient) const {
+        put(s.point, point, lanes, first);
+        put(geometric, normal, lanes, first);
+        put(s.normal, shading, lanes, first);
+        const MaterialShading<T>& m = scene_.shading[size_t(material)];
+        put(ambient, Vec3Lanes<T>::splat(m.ambient), lanes, first);
+        put(s.reflectivity, splat(m.reflectivity), lanes, first);
+        put(s.glazed, m.glazed ? lanes : LaneInts<T>{}, lanes, first);
+        put(s.material, LaneInts<T>{} + material, lanes, first);
+    }
+
+    // The ambient term into local; both normals turned to face the ray, and
+    // where secondary rays start (surfaces).
+    FH_HOT_INLINE void finish_surfaces(const RayPacket<T>& ray, const LaneInts<T>& hit, const Vec3Lanes<T>& geometric,
+                                       const ColorLanes<T>& ambient, SurfaceLanes& s, ColorLanes<T>& local) const {
+        const Lanes<T> zero = splat(T(0));
         local += select(hit, ambient, Vec3Lanes<T>{zero, zero, zero});
         // Both normals turn with the face: a smooth normal stays on the
         // side of the face the ray came from.
@@ -200,19 +217,9 @@ private:
                 shading = smooth ? normalize(inst.normal_to_world.vector(shading)) : normal;
                 material = inst.material;
             }
-            put(s.point, point, lanes, first);
-            put(geometric, normal, lanes, first);
-            put(s.normal, shading, lanes, first);
-            const MaterialShading<T>& m = scene_.shading[size_t(material)];
-            put(ambient, Vec3Lanes<T>::splat(m.ambient), lanes, first);
-            put(s.reflectivity, splat(m.reflectivity), lanes, first);
-            put(s.glazed, m.glazed ? lanes : LaneInts<T>{}, lanes, first);
-            put(s.material, LaneInts<T>{} + material, lanes, first);
+            put_hit(point, normal, shading, material, lanes, first, s, geometric, ambient);
         });
-        local += select(hit, ambient, Vec3Lanes<T>{zero, zero, zero});
-        const LaneInts<T> flip = dot(geometric, ray.direction) > T(0);
-        s.normal = select(flip, -s.normal, s.normal);
-        s.origin = offset_origin(s.point, select(flip, -geometric, geometric));
+        finish_surfaces(ray, hit, geometric, ambient, s, local);
     }
 
     // Calls fn(a, b, lanes, first) for each distinct pair (a, b) among the

@@ -75,10 +75,10 @@ FH_HOT_INLINE void for_each_leaf_of_ray(const WideBvh& wide, const Vec3<T>& orig
     const V ox = V{} + origin.x, oy = V{} + origin.y, oz = V{} + origin.z;
     const V ix = V{} + inverse_of(direction.x), iy = V{} + inverse_of(direction.y), iz = V{} + inverse_of(direction.z);
     const T grow = T(1) + 8 * std::numeric_limits<T>::epsilon();
-    auto load = [](const float (&row)[kWideChildren]) FH_HOT_LAMBDA {
-        V v;
+    // (Outputs, not returned vectors, here and below: a 64-byte vector
+    // returned without AVX-512 draws GCC's ABI warning, even inlined.)
+    auto load = [](const float (&row)[kWideChildren], V& v) FH_HOT_LAMBDA {
         for (int c = 0; c < kWideChildren; ++c) v[c] = T(row[c]);
-        return v;
     };
     struct Entry {
         std::int32_t node;
@@ -95,14 +95,19 @@ FH_HOT_INLINE void for_each_leaf_of_ray(const WideBvh& wide, const Vec3<T>& orig
             continue;
         }
         const WideNode& n = wide.nodes[size_t(e.node)];
-        const V x0 = (load(n.lo[0]) - ox) * ix, x1 = (load(n.hi[0]) - ox) * ix;
-        const V y0 = (load(n.lo[1]) - oy) * iy, y1 = (load(n.hi[1]) - oy) * iy;
-        const V z0 = (load(n.lo[2]) - oz) * iz, z1 = (load(n.hi[2]) - oz) * iz;
-        // min and max as the packet walk's: the first argument wins a tie or NaN.
-        auto lo = [](const V& a, const V& b) FH_HOT_LAMBDA { return b < a ? b : a; };
-        auto hi = [](const V& a, const V& b) FH_HOT_LAMBDA { return a < b ? b : a; };
-        const V near = hi(hi(lo(x0, x1), lo(y0, y1)), hi(lo(z0, z1), V{}));
-        const V far = lo(lo(hi(x0, x1), hi(y0, y1)), hi(z0, z1)) * grow;
+        V lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) load(n.lo[a], lo[a]), load(n.hi[a], hi[a]);
+        const V x0 = (lo[0] - ox) * ix, x1 = (hi[0] - ox) * ix;
+        const V y0 = (lo[1] - oy) * iy, y1 = (hi[1] - oy) * iy;
+        const V z0 = (lo[2] - oz) * iz, z1 = (hi[2] - oz) * iz;
+        // The packet walk's min and max, written out (a tie or NaN keeps the
+        // first): near = max(min x, min y, min z, 0), far = min(max x, max y, max z).
+        const V nx = x1 < x0 ? x1 : x0, ny = y1 < y0 ? y1 : y0, nz = z1 < z0 ? z1 : z0;
+        const V fx = x0 < x1 ? x1 : x0, fy = y0 < y1 ? y1 : y0, fz = z0 < z1 ? z1 : z0;
+        const V nxy = nx < ny ? ny : nx, nz0 = nz < V{} ? V{} : nz;
+        const V near = nxy < nz0 ? nz0 : nxy;
+        const V fxy = fy < fx ? fy : fx;
+        const V far = (fz < fxy ? fz : fxy) * grow;
         const T limit = t_max();
         const auto enter = (near <= far) & (near <= limit) & (limit > T(0));
         // The children entered, pushed farthest first so the nearest is

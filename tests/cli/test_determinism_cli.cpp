@@ -7,7 +7,7 @@
 #include <regex>
 
 #include "cli/small_movie.h"
-#include "geometry/icosphere.h"
+#include "support/off_file.h"
 
 namespace fh::test {
 namespace {
@@ -82,15 +82,7 @@ TEST(DeterminismCli, RenderOfOneFrameIsTheSameForAnyThreads) {
 // rays walk it too.
 TEST(DeterminismCli, FramesOverAMeshAreTheSameBytesForAnyThreadsAndShards) {
     const fs::path dir = movie_dir("determinism_mesh");
-    {
-        std::ofstream off(dir / "ball.off");
-        const std::vector<Triangle<double>> tris = icosphere(3, 1.0, 0);
-        off << "OFF\n" << 3 * tris.size() << " " << tris.size() << " 0\n";
-        off.precision(17);
-        for (const auto& t : tris)
-            for (const dvec3& v : {t.v0, t.v1, t.v2}) off << v.x << " " << v.y << " " << v.z << "\n";
-        for (size_t i = 0; i < tris.size(); ++i) off << "3 " << 3 * i << " " << 3 * i + 1 << " " << 3 * i + 2 << "\n";
-    }
+    write_icosphere_off(dir / "ball.off", 3);
     std::string scene = slurp(dir / "scene.yaml");
     scene = std::regex_replace(scene, std::regex("surfaces:\n"),
                                "surfaces:\n  - {type: mesh, file: ball.off, material: metal,\n"

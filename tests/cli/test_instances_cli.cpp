@@ -11,7 +11,7 @@
 #include <fstream>
 
 #include "cli/run_command.h"
-#include "geometry/icosphere.h"
+#include "support/off_file.h"
 #include "support/png_read.h"
 #include "yaml/scene_loader.h"
 
@@ -19,17 +19,6 @@ namespace fh::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A closed mesh of 80 triangles (radius 1) as an OFF file.
-void write_ball(const fs::path& path) {
-    std::ofstream off(path);
-    const std::vector<Triangle<double>> tris = icosphere(1, 1.0, 0);
-    off << "OFF\n" << 3 * tris.size() << " " << tris.size() << " 0\n";
-    off.precision(17);
-    for (const auto& t : tris)
-        for (const dvec3& v : {t.v0, t.v1, t.v2}) off << v.x << " " << v.y << " " << v.z << "\n";
-    for (size_t i = 0; i < tris.size(); ++i) off << "3 " << 3 * i << " " << 3 * i + 1 << " " << 3 * i + 2 << "\n";
-}
 
 const std::string kHead =
     "materials:\n"
@@ -46,7 +35,7 @@ const std::string kHead =
 // A folder with the ball, a placements file and scene.yaml = kHead + body.
 fs::path scene_dir(const std::string& name, const std::string& body, const std::string& csv = "") {
     const fs::path dir = fresh_dir(name);
-    write_ball(dir / "ball.off");
+    write_icosphere_off(dir / "ball.off", 1);  // 80 triangles, closed
     if (!csv.empty()) std::ofstream(dir / "rows.csv") << csv;
     std::ofstream(dir / "scene.yaml") << kHead << body;
     return dir;
