@@ -16,7 +16,8 @@ namespace fh {
 
 // A leaf's triangles against ray `lane` of the basis's packet: each
 // column's t below t_max (infinity where none), calling take(t_lanes, id of
-// column 0) per vector of columns. For any other leaf, each primitive's t.
+// column 0) per vector of columns; for any other leaf, each primitive's t
+// alone in column 0.
 template <typename T, typename Take>
 FH_HOT_INLINE bool test_leaf_for_ray(const FlatGeometry<T>& geometry, const RayBasis<T>& basis, int lane,
                                      const WalkNode<T>& n, T t_max, Take&& take) {
@@ -34,8 +35,10 @@ FH_HOT_INLINE bool test_leaf_for_ray(const FlatGeometry<T>& geometry, const RayB
     }
     for (int k = n.first_listed(); k < n.first_listed() + n.count(); ++k) {
         const int id = geometry.bvh.prims[size_t(k)];
-        const Lanes<T> t = geometry.intersect(id, basis, T(0), splat(t_max));
-        if (take(select(lane_index<T>() == lane, t, splat(kInfinity<T>)), id)) return true;
+        // This ray's t in column 0, as a run's first triangle's would be.
+        Lanes<T> t = splat(kInfinity<T>);
+        t[0] = geometry.intersect(id, basis, T(0), splat(t_max))[lane];
+        if (take(t, id)) return true;
     }
     return false;
 }

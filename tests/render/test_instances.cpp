@@ -33,6 +33,19 @@ std::shared_ptr<const Mesh> sphere_mesh(int subdivisions = 1) {
     return mesh;
 }
 
+// A closed box of 12 triangles: few enough that its mesh is tested as a
+// list, its leaves listing their triangles rather than running over them.
+std::shared_ptr<const Mesh> box_mesh() {
+    auto mesh = std::make_shared<Mesh>();
+    for (int i = 0; i < 8; ++i) mesh->positions.push_back({i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0});
+    const std::uint32_t faces[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    for (const auto& f : faces) {
+        mesh->triangles.push_back({f[0], f[1], f[2]});
+        mesh->triangles.push_back({f[0], f[2], f[3]});
+    }
+    return mesh;
+}
+
 // A random placement: turned about a random axis, scaled unevenly by 0.3 .. 2
 // per axis, mirrored when `mirror`, moved within 8 of the origin.
 glm::dmat4 random_placement(std::mt19937& rng, bool mirror) {
@@ -157,6 +170,20 @@ TYPED_TEST(InstanceWalk, NearestHitIsBruteForcesForAMillionRays) {
     }
     EXPECT_EQ(checked, 1'000'000 / kLanes<T> * kLanes<T>);
     EXPECT_GT(hits_on_instances, checked / 4);  // the test reaches the second level
+}
+
+TYPED_TEST(InstanceWalk, NearestHitIsBruteForcesForASmallMesh) {
+    using T = TypeParam;
+    std::mt19937 rng(13);
+    const Scene scene = instanced_scene(rng, 9, box_mesh());
+    const TwoLevels<T> g(scene);
+    long hits_on_instances = 0;
+    for (int n = 0; n < 100'000 / kLanes<T>; ++n) {
+        const LaneInts<T> on = expect_brute_force(g, random_packet<T>(rng, scene), n);
+        if (::testing::Test::HasFailure()) return;  // the first difference is enough
+        hits_on_instances += count(on >= 0);
+    }
+    EXPECT_GT(hits_on_instances, 10'000);
 }
 
 TYPED_TEST(InstanceWalk, ShadowRaysAreBlockedExactlyWhenBruteForceFindsABlocker) {
