@@ -33,7 +33,8 @@ while [[ $# -gt 0 ]]; do
 done
 [[ ${#positional[@]} -ge 1 && ${#positional[@]} -le 2 ]] || { echo "$usage" >&2; exit 2; }
 movie=${positional[0]} outdir=${positional[1]:-output}
-name=$(basename "$movie" .yaml)
+name=$(basename "$movie")
+name=${name%.*}  # movie.yaml, model.gltf, model.glb: the name without its extension
 info=$("$firsthit" info "$movie")
 fps=$(sed -n 's/^fps: //p' <<<"$info")
 size="$(sed -n 's/^width: //p' <<<"$info")x$(sed -n 's/^height: //p' <<<"$info")"

@@ -10,6 +10,9 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 packages=(build-essential cmake pkg-config libglm-dev libstb-dev libyaml-cpp-dev zlib1g-dev
           googletest libgtest-dev libbenchmark-dev ffmpeg gnuplot-nox
           libassimp-dev  # mesh files: OBJ, PLY, STL, OFF
+          libtinygltf-dev nlohmann-json3-dev  # glTF 2.0 files (src/gltf)
+          assimp-testmodels  # the glTF, OBJ, PLY, STL and OFF files of tests/gltf
+          python3  # scripts/gltf_demo.py writes the glTF demo
           clang libclang-rt-14-dev  # clang, libclang-rt: the fuzzers (scripts/fuzz.sh)
           slurm-wlm munge  # a one-node Slurm cluster for tests/slurm/test_slurm.sh
           libembree-dev  # bench/embree_reference: the Embree 3 peer of the mesh benchmarks (optional at build time)

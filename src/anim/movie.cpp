@@ -131,6 +131,7 @@ void Movie::animate_camera(Property property, Path path) {
 }
 
 bool Movie::scene_changes() const {
+    if (!node_channels.empty()) return true;
     for (const Animation& a : animations)
         if (!is_camera(a.target.property)) return true;
     return false;
@@ -138,6 +139,7 @@ bool Movie::scene_changes() const {
 
 ShapeChanges Movie::shape_changes() const {
     ShapeChanges changes;
+    changes.instances = !node_channels.empty();  // glTF nodes carry instances
     // What a surface moves; a group moves what it holds, at any depth.
     auto mark = [&](const NamedSurface& s) {
         const bool placed = s.kind == SurfaceKind::instance || s.kind == SurfaceKind::instances;
@@ -173,6 +175,16 @@ dvec3 value_at(const Movie& movie, const Target& t, int frame) {
 
 Camera camera_at(const Movie& movie, int frame) {
     Camera cam = movie.camera;
+    if (cam.node >= 0 && !movie.node_channels.empty()) {
+        // A glTF camera on an animated node: the nodes at this frame place it.
+        Scene nodes;
+        nodes.groups = movie.scene.groups;
+        nodes.nodes = movie.scene.nodes;
+        nodes.cameras = {cam};
+        apply_channels(movie.node_channels, frame / movie.fps, nodes);
+        place_nodes(nodes);
+        cam = nodes.cameras[0];
+    }
     Scene none;  // set_value's scene: camera properties never touch it
     for (const Animation& a : movie.animations)
         if (is_camera(a.target.property)) set_value(a.target, value_at(movie, a.target, frame), none, cam);
@@ -202,6 +214,10 @@ void scene_at(const Movie& movie, int frame, Scene& scene) {
             else
                 place_surface(scene, named, glm::dmat4(1.0));
         }
+    }
+    if (!movie.node_channels.empty()) {
+        apply_channels(movie.node_channels, frame / movie.fps, scene);
+        if (!groups_move) place_nodes(scene);  // (place_groups places the nodes too)
     }
     if (groups_move) place_groups(scene);
 }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "anim/node_channel.h"
 #include "anim/path.h"
 #include "anim/property.h"
 #include "render/prepared_scene.h"
@@ -33,6 +34,9 @@ struct Movie {
     double fps = 30;
     double seconds = 10;
     std::vector<Animation> animations;
+    // A glTF file's animations, on the movie's clock (frame i at i / fps
+    // seconds): the nodes they drive, and what hangs on those.
+    std::vector<NodeChannel> node_channels;
     std::vector<std::string> warnings;  // the scene file's (yaml/scene_loader.h)
 
     int frame_count() const;  // round(fps * seconds)

@@ -21,8 +21,9 @@ const std::vector<CommandSpec>& all_commands() {
         {"render", "FILE", "render one frame of a scene or movie to an image",
          "Renders one frame of a scene or movie file (a movie names its scene) to an image, and prints "
          "the path it wrote.",
-         {"--frame", "--camera", "--resolution", "--scale", "--spp", "--depth", "--precision", "--adaptive",
-          "--aa-threshold", "--aa-samples", "--no-prune", "--threads", "--output", "--stats", "--quiet"},
+         {"--frame", "--camera", "--animation", "--fps", "--exposure", "--resolution", "--scale", "--spp", "--depth",
+          "--precision", "--adaptive", "--aa-threshold", "--aa-samples", "--no-prune", "--threads", "--output",
+          "--stats", "--quiet"},
          "The image is written under a temporary name and renamed: it is whole or absent.",
          size_pointers({{"--range", "render draws one frame; for several use 'firsthit frames MOVIE --range A-B'"},
                         {"--out", "render writes one image with -o FILE; 'firsthit frames MOVIE --out DIR' "
@@ -33,7 +34,8 @@ const std::vector<CommandSpec>& all_commands() {
          "the movie, its frame count, fps and size, which scripts/encode.sh reads. Each file is written under "
          "a temporary name and renamed, so a frame file is always whole. On a terminal a progress line "
          "shows frames done, frames per second and the time left.",
-         {"--out", "--frame", "--range", "--shard", "--shards", "--resume", "--clean", "--resolution", "--scale",
+         {"--out", "--frame", "--range", "--shard", "--shards", "--resume", "--clean", "--camera", "--animation",
+          "--fps", "--exposure", "--resolution", "--scale",
           "--spp", "--depth", "--precision", "--adaptive", "--aa-threshold", "--aa-samples", "--no-prune",
           "--threads", "--raw-video", "--raw-pix-fmt", "--stats", "--quiet"},
          "Frames of another movie or size under the same names (an earlier, longer or larger render into "
@@ -45,15 +47,16 @@ const std::vector<CommandSpec>& all_commands() {
          "temporaries (frame_NNNN.png.tmp-...) of dead runs are removed by the next run.",
          size_pointers({{"--output", "frames writes many files: --out DIR, or --out 'DIR/name_%04d.png'"},
                         {"-o", "frames writes many files: --out DIR, or --out 'DIR/name_%04d.png'"},
-                        {"--camera", "a movie's camera is set in the file"}})},
+                       })},
         {"bench", "FILE", "time one frame: median ms per frame and rays per second",
          "Renders one frame several times after a warm-up run and prints, as key: value lines, the median "
          "time per frame (rendering only, no image written), rays per second and the rays traced by kind; "
          "and, apart, the time to load the file (load_ms) and to prepare the scene once for all frames "
          "(prepare_ms: flattening it for the tracer and building its BVH, of which build_ms the BVH; "
          "bvh_nodes its size).",
-         {"--frame", "--camera", "--resolution", "--scale", "--runs", "--threads", "--spp", "--depth",
-          "--precision", "--adaptive", "--aa-threshold", "--aa-samples", "--no-prune"},
+         {"--frame", "--camera", "--animation", "--fps", "--exposure", "--resolution", "--scale", "--runs",
+          "--threads", "--spp", "--depth", "--precision", "--adaptive", "--aa-threshold", "--aa-samples",
+          "--no-prune"},
          "",
          size_pointers()},
         {"accuracy", "FILE", "what each accuracy knob costs: error against a reference vs time",
@@ -93,11 +96,19 @@ const std::vector<CommandSpec>& all_commands() {
          {},
          "",
          {}},
+        {"export", "FILE", "a frame's triangles in world space to a .ply or .obj file",
+         "Writes the triangles a frame of a scene, movie or glTF file shows -- its own and each instance's, "
+         "after groups, hierarchy and animation -- in world space to a PLY (binary, double coordinates) or "
+         "OBJ file, each triangle with its own three vertices, so any mesh viewer can check a scene or an "
+         "animation. Spheres, disks and planes are not triangles and are left out (with a warning).",
+         {"--frame", "--animation", "--fps", "--output", "--quiet"},
+         "The file is written under a temporary name and renamed: it is whole or absent.",
+         {{"--out", "export writes one file: -o OUT.ply or -o OUT.obj"}}},
         {"view", "FILE", "a window showing a frame (needs GLFW)",
          "Opens a window showing a frame of a scene or movie file, rendered at a quarter of the resolution "
          "at once, then at full resolution (the same image as 'firsthit render' gives).",
-         {"--frame", "--camera", "--resolution", "--scale", "--spp", "--depth", "--precision", "--adaptive",
-          "--aa-threshold", "--aa-samples", "--no-prune", "--threads"},
+         {"--frame", "--camera", "--animation", "--fps", "--exposure", "--resolution", "--scale", "--spp", "--depth",
+          "--precision", "--adaptive", "--aa-threshold", "--aa-samples", "--no-prune", "--threads"},
          "keys:\n"
          "  P             switch camera projection: a scene file shows its next camera with the other\n"
          "                projection (orthographic <-> perspective); a movie keeps its camera path\n"

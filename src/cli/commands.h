@@ -17,6 +17,7 @@ int run_bench(const Args& args);
 int run_frames(const Args& args);
 int run_info(const Args& args);
 int run_accuracy(const Args& args);
+int run_export(const Args& args);
 int run_view(const Args& args);  // src/view/view_command.cpp
 
 }  // namespace fh

@@ -13,7 +13,13 @@ const std::vector<Flag>& all_flags() {
         {"--frame", "", "N",
          "movie files: the frame, counted from 0 (default 0); for frames: only this frame, the same as "
          "--range N-N"},
-        {"--camera", "", "NAME", "scene files: the camera, by name (default: the first listed)"},
+        {"--camera", "", "NAME", "scene and glTF files: the camera, by name (glTF: or index; default: the "
+                                 "first listed)"},
+        {"--animation", "", "A",
+         "glTF files: the animation to play, by name or index, or 'all' together (default)"},
+        {"--fps", "", "F", "glTF files: frames per second of their animation (default 30): frame N is N/F seconds"},
+        {"--exposure", "", "X",
+         "glTF files: a factor on every light's intensity, for a file too dark or bright (default 1)"},
         {"--resolution", "", "WxH",
          "render at this size instead of the file's, e.g. 160x120 for a quick preview. The image plane "
          "keeps its height, so another aspect ratio shows more or less at the sides"},

@@ -10,6 +10,7 @@
 #include "cli/human.h"
 #include "cli/job.h"
 #include "cli/stats_output.h"
+#include "gltf/gltf_loader.h"
 #include "pipeline/job.h"
 #include "text/input_error.h"
 #include "yaml/movie_loader.h"
@@ -24,7 +25,7 @@ Job movie_job(const Args& args) {
     if (args.positional().size() != 1)
         throw UsageError("expected one MOVIE file, got " + std::to_string(args.positional().size()));
     const std::string file = args.positional()[0];
-    if (!is_movie_file(file)) {
+    if (!is_movie_file(file) && !is_gltf_file(file)) {
         // Unreadable, not YAML, or a scene with mistakes: say what is wrong
         // with it, at its position, rather than only that it is no movie.
         load_scene(file);
@@ -34,6 +35,11 @@ Job movie_job(const Args& args) {
     what.file = file;
     what.check_cameras = false;  // after the frame flags, as their errors come first
     what.size = size_from_args(args);
+    what.camera = args.value("--camera");
+    what.movie_camera_note = "its camera is set in the file";
+    what.animation = args.value("--animation");
+    if (args.has("--fps")) what.fps = args.number("--fps", 30, 1e-3, 1000);
+    if (args.has("--exposure")) what.exposure = args.number("--exposure", 1, 0, 1e6);
     return load_job(what);
 }
 

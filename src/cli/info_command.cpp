@@ -4,6 +4,8 @@
 
 #include "anim/frame_selection.h"
 #include "anim/movie.h"
+#include "gltf/gltf_loader.h"
+#include "gltf/gltf_movie.h"
 #include "cli/commands.h"
 #include "cli/args.h"
 #include "text/input_error.h"
@@ -46,6 +48,24 @@ void print_scene(const Scene& s, const RenderSettings& settings) {
 int run_info(const Args& args) {
     if (args.positional().size() != 1) throw UsageError("expected one FILE");
     const std::string file = args.positional()[0];
+    if (is_gltf_file(file)) {
+        const GltfFile g = load_gltf(file);
+        const Movie m = load_gltf_movie({file, std::nullopt, std::nullopt, 30, 1});
+        std::cout << "kind: gltf\n"
+                  << "frames: " << m.frame_count() << "\n"
+                  << "fps: " << m.fps << "\n"
+                  << "seconds: " << m.seconds << "\n"
+                  << "camera: " << m.camera.name << "\n"
+                  << "width: " << m.camera.width << "\n"
+                  << "height: " << m.camera.height << "\n"
+                  << "first_frame_file: " << FrameFiles{}.name(0, m.frame_count()) << "\n"
+                  << "nodes: " << g.scene.nodes.size() << "\n"
+                  << "animations:";
+        for (const NodeAnimation& a : g.animations) std::cout << " '" << a.name << "'";
+        std::cout << "\n";
+        print_scene(m.scene, m.settings);
+        return 0;
+    }
     if (is_movie_file(file)) {
         const Movie m = load_movie(file);
         std::cout << "kind: movie\n"

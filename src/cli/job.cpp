@@ -56,7 +56,14 @@ const std::string& one_file(const Args& args) {
 
 Job job_from_args(const Args& args, const char* movie_camera_note) {
     one_file(args);
-    JobRequest request{args.positional()[0], args.value("--camera"), args.value("--frame"), size_from_args(args)};
+    JobRequest request;
+    request.file = args.positional()[0];
+    request.camera = args.value("--camera");
+    request.frame = args.value("--frame");
+    request.size = size_from_args(args);
+    request.animation = args.value("--animation");
+    if (args.has("--fps")) request.fps = args.number("--fps", 30, 1e-3, 1000);
+    if (args.has("--exposure")) request.exposure = args.number("--exposure", 1, 0, 1e6);
     if (movie_camera_note) request.movie_camera_note = movie_camera_note;
     Job job = load_job(request);
     if (!args.has("--quiet")) print_warnings(job);

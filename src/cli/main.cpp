@@ -19,7 +19,7 @@ namespace {
 using Run = int (*)(const Args&);
 const std::map<std::string_view, Run> kRun = {
     {"render", run_render}, {"frames", run_frames}, {"bench", run_bench},
-    {"accuracy", run_accuracy}, {"info", run_info}, {"view", run_view},
+    {"accuracy", run_accuracy}, {"info", run_info}, {"export", run_export}, {"view", run_view},
 };
 
 bool asks_for_help(const Words& words) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gltf/gltf_loader.h"
+#include "gltf/gltf_movie.h"
 #include "text/closest_match.h"
 #include "text/input_error.h"
 #include "yaml/movie_loader.h"
@@ -63,12 +65,18 @@ void resize_camera(Camera& camera, const SizeOverride& size) {
 Job load_job(const JobRequest& request) {
     Job job;
     job.file = request.file;
-    job.is_movie_file = is_movie_file(job.file);
+    const bool gltf = is_gltf_file(job.file);
+    if (!gltf && (request.animation || request.fps || request.exposure))
+        throw UsageError(std::string(request.animation ? "--animation" : request.fps ? "--fps" : "--exposure") +
+                         " applies to glTF files (.gltf, .glb); " + job.file + " is not one");
+    job.is_movie_file = gltf || is_movie_file(job.file);
     if (job.is_movie_file) {
-        if (request.camera)
+        if (request.camera && !gltf)
             throw UsageError("--camera applies to scene files; " + job.file + " is a movie (" +
                              request.movie_camera_note + ")");
-        job.movie = load_movie(job.file);
+        job.movie = gltf ? load_gltf_movie({job.file, request.camera, request.animation, request.fps.value_or(30),
+                                            request.exposure.value_or(1)})
+                         : load_movie(job.file);
         job.frame = request.frame ? parse_int(*request.frame, "--frame", 0, job.movie.frame_count() - 1) : 0;
         resize_camera(job.movie.camera, request.size);
         job.warnings = job.movie.warnings;

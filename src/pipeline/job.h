@@ -24,6 +24,10 @@ struct JobRequest {
     std::optional<std::string> camera;  // scene files only: a camera's name
     std::optional<std::string> frame;   // movie files only: the frame, as typed (default 0)
     SizeOverride size;
+    // glTF files only: which animation(s), frames per second, light exposure.
+    std::optional<std::string> animation;
+    std::optional<double> fps;
+    std::optional<double> exposure;
     // Check the movie's camera at every frame now (check_movie_cameras);
     // `frames` does it itself, after its own flags are checked.
     bool check_cameras = true;
@@ -37,7 +41,7 @@ struct Job {
     // frame. A scene file loads as a still movie: no paths, the picked
     // camera, one frame.
     Movie movie;
-    bool is_movie_file = false;
+    bool is_movie_file = false;  // a movie file, or a glTF file (its animations make it one)
     int frame = -1;        // movie files: the picked frame; -1 for a scene file
     int camera_index = 0;  // scene files: the picked camera in movie.scene.cameras
     Camera camera;         // the picked camera: the scene's, or the movie's at `frame`

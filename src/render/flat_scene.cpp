@@ -48,6 +48,7 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
     }
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const Material<double>& mat = scene.materials[m];
+        if (mat.emissive != dvec3(0)) ambient[m] += mat.emissive;  // (only then: bytes as before for the report's)
         const int whole = whole_exponent(mat.phong_exponent);
         f.shading.push_back({Color<T>(ambient[m]), mat.glazed, T(mat.reflectivity), T(mat.phong_exponent),
                              whole >= 0});

@@ -26,6 +26,12 @@ struct Camera {
     dvec3 look_at{0, 0, -1};  // a direction
     dvec3 up{0, 0, 1};
     double projection_distance = 10;
+    // Half the image plane's height: the report's 10. An orthographic camera
+    // sees 2 half_height world units from the top of the image to the
+    // bottom; a perspective one sees them at projection_distance (a glTF
+    // camera sets both from its yfov, or its ymag).
+    double half_height = 10;
+    int node = -1;  // a glTF camera: the scene node that places it (scene/node.h)
 };
 
 struct CameraBasis {
@@ -51,8 +57,8 @@ public:
         eye_ = Vec3<T>(cam.view_point);
         u_ = Vec3<T>(b.u);
         v_ = Vec3<T>(b.v);
-        const double half_height = 10.0;
-        const double half_width = 10.0 * cam.width / cam.height;
+        const double half_height = cam.half_height;
+        const double half_width = cam.half_height * cam.width / cam.height;
         x0_ = T(-half_width);
         y0_ = T(half_height);
         dx_ = T(2 * half_width / cam.width);

@@ -5,6 +5,7 @@
 // not a thousand copies of the triangles.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -13,6 +14,11 @@
 #include "scene/mesh.h"
 
 namespace fh {
+
+// A scene may hold this many instances: each costs the tracer ~250 bytes
+// (its matrices in double and in the tracer's type, its box, its share of
+// the top-level BVH), so 4 million take ~1 GB.
+inline constexpr std::size_t kMaxInstances = 4'000'000;
 
 // A `meshes:` entry: one file, read once, in its own space.
 struct SceneMesh {
@@ -25,6 +31,10 @@ struct Instance {
     int mesh = 0;      // into Scene::meshes
     int material = 0;  // into Scene::materials
     glm::dmat4 to_world{1.0};  // object space -> world; invertible (the loaders check)
+    // A glTF mesh: the scene node that places it (scene/node.h), and where
+    // in that node's space (EXT_mesh_gpu_instancing's rows; else identity).
+    int node = -1;
+    glm::dmat4 in_node{1.0};
 };
 
 // A `type: group`: what it holds moves with its transform.

@@ -23,6 +23,7 @@ struct DirectionalLight {
     T intensity = 0;
     Vec3<T> direction{0, 0, -1};  // unit; the way the light travels
     bool on = true;
+    int node = -1;  // a glTF light: the scene node that points it (scene/node.h)
 
     Vec3<T> to_light() const { return -direction; }
 };

@@ -19,6 +19,9 @@ struct Material {
     T phong_exponent = 1;
     bool glazed = false;
     T reflectivity = 0;  // weight of the reflected colour when glazed
+    // Light the surface gives off itself (0..255 a channel, added as it is,
+    // lit or not: a glTF material's emissive). The report's materials have none.
+    Color<T> emissive{0};
 };
 
 // The exponent as a whole number, so shading can use repeated squaring; -1

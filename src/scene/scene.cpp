@@ -73,6 +73,7 @@ void place_groups(Scene& scene) {
     const std::vector<glm::dmat4> world = group_matrices(scene.groups);
     for (const NamedSurface& s : scene.named_surfaces)
         if (s.group >= 0) place_surface(scene, s, world[size_t(s.group)]);
+    place_nodes(scene);  // a glTF file's nodes hang under the group it is placed in
 }
 
 }  // namespace fh

@@ -17,6 +17,7 @@
 #include "scene/lights.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
+#include "scene/node.h"
 #include "scene/spot_light.h"
 
 namespace fh {
@@ -59,6 +60,7 @@ struct Scene {
     std::vector<SceneMesh> meshes;   // the `meshes:` section, each file read once
     std::vector<Instance> instances;  // of those meshes
     std::vector<Group> groups;
+    std::vector<SceneNode> nodes;  // glTF files' nodes, parents first (scene/node.h)
     int mesh_files = 0;                    // mesh files read (each once)
     size_t degenerate_mesh_triangles = 0;  // their zero-area triangles, left out
 

@@ -38,8 +38,9 @@ struct SpotLight {
     T intensity = 0;
     Vec3<T> position{0};
     Vec3<T> axis{0, 0, -1};  // unit; the cone's axis, pointing away from the light
-    T max_angle = T(2 * 3.14159265358979323846);  // radians
+    T max_angle = T(2 * 3.14159265358979323846);  // radians; infinite: a point light, no falloff with angle
     bool on = true;
+    int node = -1;  // a glTF light: the scene node that places and points it (scene/node.h)
 
     // For each point of a packet. Branch-free. widest_angle: the widest theta
     // that gets light -- max_angle, or infinity where the effect plan knows

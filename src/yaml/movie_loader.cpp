@@ -7,6 +7,8 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "gltf/gltf_loader.h"
+#include "gltf/gltf_movie.h"
 #include "yaml/scene_loader.h"
 #include "yaml/map_reader.h"
 
@@ -331,13 +333,31 @@ Movie load_movie_text(const std::string* text, const std::string& path) {
         const YamlReader r(path);
         const MapReader m(r, text ? r.parse_map(*text, "movie") : r.load_map("movie"), "movie",
                           {"scene", "camera", "lights", "fps", "seconds", "width", "height", "animate", "render",
-                           "effects"});
+                           "effects", "animation"});
         Movie movie;
-        SceneFile scene_file = load_scene(scene_path(r, m));
+        const std::string scene = scene_path(r, m);
+        SceneFile scene_file;
+        if (is_gltf_file(scene)) {  // a glTF file as the scene: its cameras, lights, animations
+            GltfScene g = gltf_scene(scene);
+            scene_file.scene = std::move(g.scene);
+            scene_file.animations = std::move(g.animations);
+            scene_file.warnings = std::move(g.warnings);
+        } else {
+            scene_file = load_scene(scene);
+        }
         movie.scene = std::move(scene_file.scene);
         movie.settings = scene_file.settings;
         movie.warnings = std::move(scene_file.warnings);
         movie.camera = pick_camera(r, m, movie.scene);
+        // The animations of its glTF files: all, or the one `animation:` names.
+        if (m.has("animation") || !scene_file.animations.empty()) {
+            const std::string which = m.has("animation") ? m.string("animation") : "all";
+            try {
+                movie.node_channels = chosen_channels(scene_file.animations, which, scene);
+            } catch (const UsageError& e) {
+                r.fail(m.value("animation"), e.what());
+            }
+        }
         if (m.has("lights")) keep_only_lights(movie.scene, read_light_list(r, m.value("lights"), movie.scene));
         if (m.has("fps")) movie.fps = m.positive("fps");
         if (m.has("seconds")) movie.seconds = m.positive("seconds");

@@ -11,15 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "scene/mesh.h"
+#include "scene/instance.h"
 
 namespace fh {
 
-// A placements file may hold this many rows: each instance costs the
-// tracer ~250 bytes (its matrices in double and in the tracer's type, its
-// box, its share of the top-level BVH), so 4 million take ~1 GB.
-inline constexpr std::size_t kMaxInstances = 4'000'000;
-// ...and be this large: 4 million rows of ten columns with room to spare.
+// A placements file may hold kMaxInstances rows (scene/instance.h), and be
+// this large: 4 million rows of ten columns with room to spare.
 inline constexpr std::size_t kMaxPlacementsBytes = std::size_t(256) << 20;
 
 std::vector<Transform> load_placements(const std::string& path);

@@ -191,13 +191,19 @@ SceneFile load_scene_text(const std::string* text, const std::string& path) {
         // Materials first, whatever the file's order: surfaces refer to them.
         read_materials(r, block(top, "materials"), scene);
         read_meshes(r, block(top, "meshes"), scene);
-        read_surfaces(r, block(top, "surfaces"), scene);
+        std::vector<std::string> gltf_warnings;
+        read_surfaces(r, block(top, "surfaces"), scene, file.animations, gltf_warnings);
         if (!scene.vertex_normals.empty()) scene.vertex_normals.resize(scene.triangles.size());
         read_lights(r, block(top, "lights"), scene);
+        // The file's own cameras first (the first listed is the default),
+        // then those of the glTF files it places.
+        const auto gltf_cameras = std::ptrdiff_t(scene.cameras.size());
         read_cameras(r, top, scene);
+        std::rotate(scene.cameras.begin(), scene.cameras.begin() + gltf_cameras, scene.cameras.end());
         read_render_settings(r, block(top, "render"), file.settings);
         if (top.has("effects")) file.settings.effects = read_effects(r, top.value("effects"));
         file.warnings = unit_warnings(scene, path);
+        file.warnings.insert(file.warnings.end(), gltf_warnings.begin(), gltf_warnings.end());
         return file;
     } catch (const YAML::Exception& e) {
         throw to_input_error(path, e);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "anim/node_channel.h"
 #include "render/settings.h"
 #include "scene/scene.h"
 
@@ -27,6 +28,9 @@ struct SceneFile {
     std::vector<std::string> warnings;
     Scene scene;
     RenderSettings settings;
+    // The animations of the glTF files it places (type: gltf), their
+    // channels on the scene's nodes: a movie over this scene may play them.
+    std::vector<NodeAnimation> animations;
 };
 
 // Loads a scene file. Unreadable file, YAML syntax error or any bad value:

@@ -9,6 +9,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "gltf/gltf_loader.h"
 #include "meshes/mesh_loader.h"
 #include "yaml/map_reader.h"
 #include "yaml/placements.h"
@@ -50,7 +51,9 @@ Mesh read_triangle(const MapReader& m, int material) {
 
 class SurfaceReader {
 public:
-    SurfaceReader(const YamlReader& r, Scene& scene) : r_(r), scene_(scene) {
+    SurfaceReader(const YamlReader& r, Scene& scene, std::vector<NodeAnimation>* animations = nullptr,
+                  std::vector<std::string>* warnings = nullptr)
+        : r_(r), scene_(scene), animations_(animations), warnings_(warnings) {
         for (const NamedSurface& s : scene.named_surfaces) names_.insert(s.name);
     }
 
@@ -75,7 +78,7 @@ public:
 private:
     using Keys = std::vector<std::string>;
     static constexpr const char* kTypes[] = {"sphere", "plane", "triangle", "mesh", "instance", "instances", "group",
-                                             "disk"};
+                                             "disk", "gltf"};
 
     void read(const YAML::Node& node, const Place& place) {
         // The type decides which keys are allowed, so it is read first.
@@ -91,7 +94,8 @@ private:
         case 4: read_instance(node, place, named); break;
         case 5: read_instances(node, place, named); break;
         case 6: read_group(node, place, named); return;  // recorded before its members
-        default: read_disk(node, place); return;
+        case 7: read_disk(node, place); return;
+        default: read_gltf(node, place, named); return;
         }
         if (!named.name.empty() || named.group >= 0) scene_.named_surfaces.push_back(std::move(named));
     }
@@ -237,6 +241,25 @@ private:
         if (m.has("surfaces")) read_list(m.value("surfaces"), Place{int(named.index), world});
     }
 
+    // A glTF file: its nodes under a group of this name and transform
+    // (gltf/gltf_loader.h), its animations for a movie to play.
+    void read_gltf(const YAML::Node& node, const Place& place, NamedSurface& named) {
+        const MapReader m(r_, node, "gltf", {"type", "name", "file", "transform", "exposure"});
+        named.name = name(m);
+        named.kind = SurfaceKind::group;
+        if (m.has("transform")) named.transform = read_transform(r_, m.value("transform"));
+        check_usable(m, place.world * named.transform.matrix());
+        const double exposure = m.has("exposure") ? m.number_at_least("exposure", 0) : 1.0;
+        GltfFile file = load_gltf(relative(m, "file").string(), exposure);
+        if (warnings_) warnings_->insert(warnings_->end(), file.warnings.begin(), file.warnings.end());
+        named.index = scene_.groups.size();  // add_gltf's first group: the placement
+        std::vector<NodeAnimation> animations =
+            add_gltf(scene_, std::move(file), named.name.empty() ? "gltf" : named.name, named.transform, place.group);
+        if (animations_)
+            for (NodeAnimation& a : animations) animations_->push_back(std::move(a));
+        scene_.named_surfaces.push_back(named);
+    }
+
     // The name of a surface: unique among the surfaces.
     std::string name(const MapReader& m) {
         if (!m.has("name")) return "";
@@ -282,6 +305,8 @@ private:
 
     const YamlReader& r_;
     Scene& scene_;
+    std::vector<NodeAnimation>* animations_;
+    std::vector<std::string>* warnings_;
     std::unordered_set<std::string> names_;
     std::map<std::string, MeshData> files_;
 };
@@ -324,8 +349,9 @@ void read_meshes(const YamlReader& reader, const YAML::Node& node, Scene& scene)
     if (!node.IsNull()) SurfaceReader(reader, scene).read_meshes(node);
 }
 
-void read_surfaces(const YamlReader& reader, const YAML::Node& node, Scene& scene) {
-    SurfaceReader(reader, scene).read_list(node, Place{});
+void read_surfaces(const YamlReader& reader, const YAML::Node& node, Scene& scene,
+                   std::vector<NodeAnimation>& animations, std::vector<std::string>& warnings) {
+    SurfaceReader(reader, scene, &animations, &warnings).read_list(node, Place{});
 }
 
 }  // namespace fh

@@ -7,6 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "anim/node_channel.h"
 #include "scene/scene.h"
 #include "yaml/yaml_reader.h"
 
@@ -17,8 +18,10 @@ class MapReader;
 // The `meshes:` map: each file read once, in its own space.
 void read_meshes(const YamlReader& reader, const YAML::Node& node, Scene& scene);
 
-// The `surfaces:` list, after the materials and meshes.
-void read_surfaces(const YamlReader& reader, const YAML::Node& node, Scene& scene);
+// The `surfaces:` list, after the materials and meshes. The glTF files it
+// places add their animations and warnings to these.
+void read_surfaces(const YamlReader& reader, const YAML::Node& node, Scene& scene,
+                   std::vector<NodeAnimation>& animations, std::vector<std::string>& warnings);
 
 // A `transform:` map (scene/mesh.h): scale, then rotate, then translate.
 Transform read_transform(const YamlReader& reader, const YAML::Node& node);

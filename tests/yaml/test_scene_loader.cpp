@@ -212,7 +212,7 @@ TEST(SceneLoader, UnknownSurfaceType) {
     EXPECT_EQ(scene_error(kMaterial + kCamera +
                           "surfaces:\n"
                           "  - {type: cube, material: red}\n"),
-              "FILE:7:12: error: unknown surface type 'cube' (expected sphere, plane, triangle, mesh, instance, instances, group or disk)");
+              "FILE:7:12: error: unknown surface type 'cube' (expected sphere, plane, triangle, mesh, instance, instances, group, disk or gltf)");
 }
 
 TEST(SceneLoader, UndefinedMaterial) {

@@ -1,0 +1,233 @@
+#!/usr/bin/env python3
+"""Writes firsthit's own animated glTF (make gltf-demo): a cart that drives
+across a floor on two spinning wheels (a node hierarchy, LINEAR translation
+and LINEAR rotation by slerp), a ball that bounces (CUBICSPLINE), a beacon
+that hops from post to post (STEP), a camera on a node, and a directional, a
+point and a spot light (KHR_lights_punctual). One .gltf file, its buffer in a
+data: URI; glTF is y-up.
+
+    python3 scripts/gltf_demo.py OUT.gltf
+"""
+import base64
+import json
+import math
+import struct
+import sys
+
+
+def box(sx, sy, sz):
+    """A box centred on the origin: 24 vertices (flat faces), 12 triangles."""
+    pos, nrm, idx = [], [], []
+    for axis in range(3):
+        for sign in (-1, 1):
+            n = [0, 0, 0]
+            n[axis] = sign
+            u, v = [(axis + 1) % 3, (axis + 2) % 3]
+            base = len(pos)
+            for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+                p = [0, 0, 0]
+                p[axis] = sign
+                p[u], p[v] = a, b
+                pos.append([p[0] * sx / 2, p[1] * sy / 2, p[2] * sz / 2])
+                nrm.append(n)
+            quad = [0, 1, 2, 0, 2, 3] if sign > 0 else [0, 2, 1, 0, 3, 2]
+            idx += [base + q for q in quad]
+    return pos, nrm, idx
+
+
+def wheel(radius, width, sides=24):
+    """A cylinder along z (the axle), flat caps, smooth sides."""
+    pos, nrm, idx = [], [], []
+    for i in range(sides + 1):
+        a = 2 * math.pi * i / sides
+        c, s = math.cos(a), math.sin(a)
+        for z in (-width / 2, width / 2):
+            pos.append([radius * c, radius * s, z])
+            nrm.append([c, s, 0])
+    for i in range(sides):
+        a, b, c_, d = 2 * i, 2 * i + 1, 2 * i + 2, 2 * i + 3
+        idx += [a, c_, b, b, c_, d]
+    for z, sign in ((-width / 2, -1), (width / 2, 1)):
+        centre = len(pos)
+        pos.append([0, 0, z])
+        nrm.append([0, 0, sign])
+        for i in range(sides):
+            a = 2 * math.pi * i / sides
+            pos.append([radius * math.cos(a), radius * math.sin(a), z])
+            nrm.append([0, 0, sign])
+        for i in range(sides):
+            p, q = centre + 1 + i, centre + 1 + (i + 1) % sides
+            idx += [centre, p, q] if sign > 0 else [centre, q, p]
+    return pos, nrm, idx
+
+
+def sphere(radius, rings=16, segments=32):
+    pos, nrm, idx = [], [], []
+    for r in range(rings + 1):
+        t = math.pi * r / rings
+        for s in range(segments + 1):
+            p = 2 * math.pi * s / segments
+            n = [math.sin(t) * math.cos(p), math.cos(t), math.sin(t) * math.sin(p)]
+            pos.append([radius * c for c in n])
+            nrm.append(n)
+    for r in range(rings):
+        for s in range(segments):
+            a = r * (segments + 1) + s
+            b = a + segments + 1
+            idx += [a, a + 1, b, b, a + 1, b + 1]
+    return pos, nrm, idx
+
+
+def quat_axis_angle(axis, angle):
+    n = math.sqrt(sum(c * c for c in axis))
+    s = math.sin(angle / 2)
+    return [axis[0] / n * s, axis[1] / n * s, axis[2] / n * s, math.cos(angle / 2)]
+
+
+def quat_look(eye, target):
+    """The rotation taking a camera's -z to look from eye at target, +y up."""
+    f = [t - e for t, e in zip(target, eye)]
+    n = math.sqrt(sum(c * c for c in f))
+    f = [c / n for c in f]
+    yaw = math.atan2(-f[0], -f[2])
+    pitch = math.asin(f[1])
+    qy = quat_axis_angle([0, 1, 0], yaw)
+    qx = quat_axis_angle([1, 0, 0], pitch)
+    x1, y1, z1, w1 = qy
+    x2, y2, z2, w2 = qx
+    return [w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2, w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
+            w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2, w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2]
+
+
+class Builder:
+    def __init__(self):
+        self.data = bytearray()
+        self.views, self.accessors = [], []
+
+    def accessor(self, values, kind, component=5126, target=None):
+        """Floats (5126) or unsigned shorts/ints as a new buffer view and accessor."""
+        while len(self.data) % 4:
+            self.data.append(0)
+        flat = [c for v in values for c in (v if isinstance(v, list) else [v])]
+        fmt = {5126: "f", 5123: "H", 5125: "I"}[component]
+        start = len(self.data)
+        self.data += struct.pack("<%d%s" % (len(flat), fmt), *flat)
+        view = {"buffer": 0, "byteOffset": start, "byteLength": len(self.data) - start}
+        if target:
+            view["target"] = target
+        self.views.append(view)
+        acc = {"bufferView": len(self.views) - 1, "componentType": component, "count": len(values), "type": kind}
+        if kind == "VEC3" and component == 5126:
+            acc["min"] = [min(v[i] for v in values) for i in range(3)]
+            acc["max"] = [max(v[i] for v in values) for i in range(3)]
+        if kind == "SCALAR" and component == 5126:
+            acc["min"], acc["max"] = [min(values)], [max(values)]
+        self.accessors.append(acc)
+        return len(self.accessors) - 1
+
+    def mesh(self, shape, material):
+        pos, nrm, idx = shape
+        return {"primitives": [{
+            "attributes": {"POSITION": self.accessor(pos, "VEC3", target=34962),
+                           "NORMAL": self.accessor(nrm, "VEC3", target=34962)},
+            "indices": self.accessor(idx, "SCALAR", 5123, 34963),
+            "material": material}]}
+
+
+def main(out):
+    b = Builder()
+    materials = [
+        {"name": "floor", "pbrMetallicRoughness": {"baseColorFactor": [0.55, 0.62, 0.7, 1], "metallicFactor": 0, "roughnessFactor": 0.9}},
+        {"name": "cart", "pbrMetallicRoughness": {"baseColorFactor": [0.85, 0.15, 0.1, 1], "metallicFactor": 0, "roughnessFactor": 0.4}},
+        {"name": "tyre", "pbrMetallicRoughness": {"baseColorFactor": [0.12, 0.12, 0.14, 1], "metallicFactor": 0, "roughnessFactor": 0.8}},
+        {"name": "chrome", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.85, 0.95, 1], "metallicFactor": 1, "roughnessFactor": 0.15}},
+        {"name": "beacon", "pbrMetallicRoughness": {"baseColorFactor": [1, 0.85, 0.2, 1], "metallicFactor": 0, "roughnessFactor": 0.5},
+         "emissiveFactor": [1, 0.75, 0.1]},
+        {"name": "post", "pbrMetallicRoughness": {"baseColorFactor": [0.3, 0.5, 0.3, 1], "metallicFactor": 0, "roughnessFactor": 0.7}},
+    ]
+    meshes = [b.mesh(box(14, 0.2, 8), 0), b.mesh(box(2.2, 0.8, 1.3), 1), b.mesh(wheel(0.45, 0.3), 2),
+              b.mesh(sphere(0.6), 3), b.mesh(box(0.4, 0.4, 0.4), 4), b.mesh(box(0.3, 1.2, 0.3), 5)]
+    nodes = [
+        {"name": "floor", "mesh": 0, "translation": [0, -0.1, 0]},
+        {"name": "cart", "mesh": 1, "translation": [-4, 0.85, 1.5], "children": [2, 3, 13, 14]},
+        {"name": "front wheel", "mesh": 2, "translation": [0.75, -0.4, 0.75]},
+        {"name": "back wheel", "mesh": 2, "translation": [-0.75, -0.4, 0.75]},
+        {"name": "ball", "mesh": 3, "translation": [2.5, 0.6, -1.5]},
+        {"name": "beacon", "mesh": 4, "translation": [-3, 1.4, -2.5]},
+        {"name": "camera", "camera": 0, "translation": [0, 5.5, 11], "rotation": quat_look([0, 5.5, 11], [0, 0.5, 0])},
+        {"name": "sun", "rotation": quat_look([0, 0, 0], [-0.5, -1, -0.8]), "extensions": {"KHR_lights_punctual": {"light": 0}}},
+        {"name": "lamp", "translation": [3, 4, 2], "extensions": {"KHR_lights_punctual": {"light": 1}}},
+        {"name": "spot", "translation": [0, 1.0, 0], "rotation": quat_axis_angle([1, 0, 0], -math.pi / 2),
+         "extensions": {"KHR_lights_punctual": {"light": 2}}},
+    ]
+    for x in (-3, 0, 3):  # the beacon's posts
+        nodes.append({"name": "post %d" % x, "mesh": 5, "translation": [x, 0.6, -2.5]})
+    nodes.append({"name": "front wheel (far side)", "mesh": 2, "translation": [0.75, -0.4, -0.75]})
+    nodes.append({"name": "back wheel (far side)", "mesh": 2, "translation": [-0.75, -0.4, -0.75]})
+    nodes[5]["children"] = [9]  # the spot shines down from the beacon
+    scene_nodes = [0, 1, 4, 5, 6, 7, 8, 10, 11, 12]
+
+    # LINEAR: the cart drives across in 4 s; its wheels turn (slerp through
+    # four quarter turns a second: keys 90 degrees apart, the shorter arc).
+    times = [i * 0.25 for i in range(17)]
+    drive = b.accessor([[-4 + 2 * t, 0.85, 1.5] for t in times], "VEC3")
+    spin = b.accessor([quat_axis_angle([0, 0, 1], -math.pi / 2 * i) for i in range(17)], "VEC4")
+    t_in = b.accessor(times, "SCALAR")
+    # CUBICSPLINE: three bounces; at each landing the ball leaves upward
+    # (out-tangent +), at each top it is still (tangent 0).
+    bounce_t = [0, 0.6, 1.2, 1.8, 2.4, 3.0, 3.6]
+    heights = [0.6, 2.6, 0.6, 2.0, 0.6, 1.4, 0.6]
+    v = 6.0  # units a second at a landing
+    keys = []
+    for i, h in enumerate(heights):
+        landing = i % 2 == 0
+        inn = [0, -v if landing else 0, 0]
+        out_ = [0, v if landing and i < len(heights) - 1 else 0, 0]
+        keys += [inn, [2.5, h, -1.5], out_]
+    bounce_in = b.accessor(bounce_t, "SCALAR")
+    bounce = b.accessor(keys, "VEC3")
+    # STEP: the beacon hops post to post each second.
+    hop_t = b.accessor([0, 1, 2, 3, 4], "SCALAR")
+    hop = b.accessor([[-3, 1.4, -2.5], [0, 1.4, -2.5], [3, 1.4, -2.5], [0, 1.4, -2.5], [-3, 1.4, -2.5]], "VEC3")
+    animation = {
+        "name": "drive",
+        "samplers": [{"input": t_in, "output": drive, "interpolation": "LINEAR"},
+                     {"input": t_in, "output": spin, "interpolation": "LINEAR"},
+                     {"input": bounce_in, "output": bounce, "interpolation": "CUBICSPLINE"},
+                     {"input": hop_t, "output": hop, "interpolation": "STEP"}],
+        "channels": [{"sampler": 0, "target": {"node": 1, "path": "translation"}},
+                     {"sampler": 1, "target": {"node": 2, "path": "rotation"}},
+                     {"sampler": 1, "target": {"node": 3, "path": "rotation"}},
+                     {"sampler": 1, "target": {"node": 13, "path": "rotation"}},
+                     {"sampler": 1, "target": {"node": 14, "path": "rotation"}},
+                     {"sampler": 2, "target": {"node": 4, "path": "translation"}},
+                     {"sampler": 3, "target": {"node": 5, "path": "translation"}}],
+    }
+    gltf = {
+        "asset": {"version": "2.0", "generator": "firsthit scripts/gltf_demo.py"},
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "scene": 0,
+        "scenes": [{"nodes": scene_nodes}],
+        "nodes": nodes,
+        "meshes": meshes,
+        "materials": materials,
+        "cameras": [{"name": "front", "type": "perspective", "perspective": {"yfov": 0.75, "aspectRatio": 16 / 9, "znear": 0.1}}],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"name": "sun", "type": "directional", "color": [1, 0.95, 0.85], "intensity": 1.2},
+            {"name": "lamp", "type": "point", "color": [0.8, 0.9, 1], "intensity": 6},
+            {"name": "spot", "type": "spot", "color": [1, 0.8, 0.3], "intensity": 8, "spot": {"outerConeAngle": 0.7}}]}},
+        "animations": [animation],
+        "accessors": b.accessors,
+        "bufferViews": b.views,
+        "buffers": [{"byteLength": len(b.data),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(b.data)).decode()}],
+    }
+    with open(out, "w") as f:
+        json.dump(gltf, f, indent=1)
+        f.write("\n")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    main(sys.argv[1])

@@ -1,0 +1,494 @@
+#include "gltf/gltf_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <numbers>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gltf/accessors.h"
+#include "meshes/mesh_loader.h"
+#include "text/input_error.h"
+
+namespace fh {
+
+namespace {
+
+dvec3 vec3_or(const std::vector<double>& v, dvec3 fallback) {
+    return v.size() == 3 ? dvec3(v[0], v[1], v[2]) : fallback;
+}
+
+// A value of an extension object, or null.
+const tinygltf::Value* extension_value(const tinygltf::ExtensionMap& extensions, const std::string& name,
+                                       const std::string& key) {
+    const auto it = extensions.find(name);
+    if (it == extensions.end() || !it->second.IsObject() || !it->second.Has(key)) return nullptr;
+    return &it->second.Get(key);
+}
+
+// pbrMetallicRoughness onto the report's material (docs/gltf.md, "Materials"):
+// c = 255 baseColor; a metal's highlight is tinted and its diffuse part only
+// what roughness scatters (a rough metal -- glTF's default material -- looks
+// matte, a polished one mirrors); roughness r widens the highlight
+// (Blinn-Phong exponent 2 / a^2 - 2, a = r^2) and dims it.
+Material<double> material_of(const tinygltf::Material& m) {
+    const auto& pbr = m.pbrMetallicRoughness;
+    const dvec3 base = pbr.baseColorFactor.size() >= 3
+                           ? dvec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2])
+                           : dvec3(1);
+    const double metal = std::clamp(pbr.metallicFactor, 0.0, 1.0), rough = std::clamp(pbr.roughnessFactor, 0.0, 1.0);
+    Material<double> out;
+    out.ambient_color = out.diffuse_color = 255.0 * glm::clamp(base, 0.0, 1.0);
+    out.specular_color = metal * out.diffuse_color + (1 - metal) * dvec3(255);
+    out.ambient = 1;
+    out.diffuse = (1 - metal) + metal * rough;
+    out.specular = (0.04 + 0.96 * metal) * (1 - rough);
+    const double a = std::max(rough * rough, 0.01);
+    out.phong_exponent = std::min(2 / (a * a) - 2, 10000.0);
+    out.glazed = metal > 0.5 && rough < 0.5;
+    out.reflectivity = out.glazed ? metal * (1 - rough) * (1 - rough) : 0;
+    double strength = 1;
+    if (const tinygltf::Value* s = extension_value(m.extensions, "KHR_materials_emissive_strength", "emissiveStrength"))
+        if (s->IsNumber()) strength = s->GetNumberAsDouble();
+    out.emissive = 255.0 * strength * glm::max(vec3_or(m.emissiveFactor, dvec3(0)), dvec3(0));
+    return out;
+}
+
+class Converter {
+public:
+    Converter(const tinygltf::Model& model, std::string file, double exposure)
+        : m_(model), file_(std::move(file)), read_(model, file_), exposure_(exposure) {}
+
+    GltfFile convert() {
+        GltfFile out;
+        Scene& s = out.scene;
+        for (const tinygltf::Material& mat : m_.materials) {
+            s.material_names.push_back(mat.name.empty() ? "material " + std::to_string(s.materials.size()) : mat.name);
+            s.materials.push_back(material_of(mat));
+        }
+        default_material_ = int(s.materials.size());
+        s.material_names.push_back("glTF default");
+        s.materials.push_back(material_of(tinygltf::Material{}));
+        order_nodes();
+        for (const int n : order_) add_node(n, s);
+        for (size_t a = 0; a < m_.animations.size(); ++a) add_animation(int(a), out);
+        if (skipped_points_lines_ > 0)
+            warn(std::to_string(skipped_points_lines_) + " primitive(s) of points or lines skipped (triangles only)");
+        if (!m_.skins.empty()) warn("skins are drawn in their bind pose (skinning is not implemented yet)");
+        if (morphs_) warn("morph targets are drawn unmorphed (morphing is not implemented yet)");
+        if (!m_.textures.empty()) warn("textures are not drawn yet: materials show their base colour factor");
+        out.warnings.insert(out.warnings.begin(), warnings_.begin(), warnings_.end());
+        return out;
+    }
+
+private:
+    void warn(const std::string& what) { warnings_.push_back(file_ + ": warning: " + what); }
+    [[noreturn]] void fail(const std::string& what) const { throw InputError(file_, what); }
+
+    // The scene's nodes in an order with every parent before its children,
+    // each node reached once: a node with two parents, or a cycle, is refused.
+    void order_nodes() {
+        const size_t n = m_.nodes.size();
+        std::vector<int> parent(n, -1);
+        for (size_t p = 0; p < n; ++p)
+            for (const int c : m_.nodes[p].children) {
+                if (c < 0 || size_t(c) >= n) fail("node " + std::to_string(p) + " has child " + std::to_string(c) + ", which does not exist");
+                if (parent[size_t(c)] >= 0)
+                    fail("node " + std::to_string(c) + " has two parents (" + std::to_string(parent[size_t(c)]) +
+                         " and " + std::to_string(p) + ")");
+                parent[size_t(c)] = int(p);
+            }
+        std::vector<int> roots;
+        if (m_.scenes.empty()) fail("the file has no scene to show (no 'scenes')");
+        int scene = m_.defaultScene >= 0 ? m_.defaultScene : 0;
+        if (size_t(scene) >= m_.scenes.size()) fail("scene " + std::to_string(scene) + " does not exist");
+        roots = m_.scenes[size_t(scene)].nodes;
+        if (roots.empty()) fail("scene " + std::to_string(scene) + " has no nodes: nothing to show");
+        new_index_.assign(n, -1);
+        std::vector<int> state(n, 0);  // 0 unseen, 1 on the path, 2 done
+        std::function<void(int, int)> visit = [&](int node, int depth) {
+            if (node < 0 || size_t(node) >= n) fail("scene node " + std::to_string(node) + " does not exist");
+            if (state[size_t(node)] == 1) fail("node " + std::to_string(node) + " is its own ancestor (a cycle)");
+            if (state[size_t(node)] == 2) fail("node " + std::to_string(node) + " is reached twice");
+            if (depth > 10'000) fail("nodes nested more than 10,000 deep");
+            state[size_t(node)] = 1;
+            new_index_[size_t(node)] = int(order_.size());
+            order_.push_back(node);
+            for (const int c : m_.nodes[size_t(node)].children) visit(c, depth + 1);
+            state[size_t(node)] = 2;
+        };
+        for (const int r : roots) {
+            if (r >= 0 && size_t(r) < n && parent[size_t(r)] >= 0)
+                fail("scene node " + std::to_string(r) + " is also a child of node " + std::to_string(parent[size_t(r)]));
+            visit(r, 0);
+        }
+        parent_ = std::move(parent);
+    }
+
+    void add_node(int index, Scene& s) {
+        const tinygltf::Node& node = m_.nodes[size_t(index)];
+        SceneNode out;
+        out.name = node.name.empty() ? "node " + std::to_string(index) : node.name;
+        const int p = parent_[size_t(index)];
+        out.parent = p >= 0 ? new_index_[size_t(p)] : -1;
+        if (!node.matrix.empty()) {
+            if (node.matrix.size() != 16) fail(out.name + ": 'matrix' needs 16 numbers");
+            out.has_matrix = true;
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r) out.matrix[c][r] = node.matrix[size_t(4 * c + r)];
+        } else {
+            if (!node.translation.empty() && node.translation.size() != 3) fail(out.name + ": 'translation' needs 3 numbers");
+            if (!node.scale.empty() && node.scale.size() != 3) fail(out.name + ": 'scale' needs 3 numbers");
+            if (!node.rotation.empty() && node.rotation.size() != 4) fail(out.name + ": 'rotation' needs 4 numbers");
+            out.translation = vec3_or(node.translation, dvec3(0));
+            out.scale = vec3_or(node.scale, dvec3(1));
+            if (node.rotation.size() == 4)
+                out.rotation = glm::normalize(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
+        }
+        const glm::dmat4 local = out.local();
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!std::isfinite(local[c][r])) fail(out.name + ": its transform is not finite");
+        const int me = int(s.nodes.size());
+        s.nodes.push_back(out);
+        if (node.mesh >= 0) add_mesh_instances(node, me, s);
+        if (node.camera >= 0) add_camera(node.camera, me, s);
+        if (const tinygltf::Value* l = extension_value(node.extensions, "KHR_lights_punctual", "light")) {
+            if (!l->IsInt()) fail(out.name + ": KHR_lights_punctual's 'light' is not an index");
+            add_light(l->GetNumberAsInt(), me, s);
+        }
+    }
+
+    // Where EXT_mesh_gpu_instancing puts copies within the node: one matrix
+    // a row (T * R * S), or the node itself.
+    std::vector<glm::dmat4> rows_of(const tinygltf::Node& node, const std::string& name) const {
+        const auto it = node.extensions.find("EXT_mesh_gpu_instancing");
+        if (it == node.extensions.end()) return {glm::dmat4(1.0)};
+        if (!it->second.Has("attributes") || !it->second.Get("attributes").IsObject())
+            fail(name + ": EXT_mesh_gpu_instancing without attributes");
+        const tinygltf::Value& attributes = it->second.Get("attributes");
+        std::vector<double> t, r, sc;
+        size_t rows = 0;
+        auto take = [&](const char* key, int components, std::vector<double>& into) {
+            if (!attributes.Has(key)) return;
+            const tinygltf::Value& v = attributes.Get(key);
+            if (!v.IsInt()) fail(name + ": EXT_mesh_gpu_instancing's " + key + " is not an accessor index");
+            into = read_.numbers(v.GetNumberAsInt(), components, name + " instancing " + key);
+            const size_t n = into.size() / size_t(components);
+            if (rows != 0 && n != rows) fail(name + ": EXT_mesh_gpu_instancing's attributes differ in count");
+            rows = n;
+        };
+        take("TRANSLATION", 3, t);
+        take("ROTATION", 4, r);
+        take("SCALE", 3, sc);
+        if (rows > kMaxInstances) fail(name + ": " + std::to_string(rows) + " instances (the limit is " + std::to_string(kMaxInstances) + ")");
+        std::vector<glm::dmat4> out;
+        for (size_t k = 0; k < rows; ++k) {
+            SceneNode row;
+            if (!t.empty()) row.translation = {t[3 * k], t[3 * k + 1], t[3 * k + 2]};
+            if (!r.empty()) row.rotation = glm::normalize(glm::dquat(r[4 * k + 3], r[4 * k], r[4 * k + 1], r[4 * k + 2]));
+            if (!sc.empty()) row.scale = {sc[3 * k], sc[3 * k + 1], sc[3 * k + 2]};
+            out.push_back(row.local());
+        }
+        return out;
+    }
+
+    void add_mesh_instances(const tinygltf::Node& node, int at, Scene& s) {
+        if (size_t(node.mesh) >= m_.meshes.size()) fail(s.nodes[size_t(at)].name + ": mesh " + std::to_string(node.mesh) + " does not exist");
+        const std::vector<glm::dmat4> rows = rows_of(node, s.nodes[size_t(at)].name);
+        const tinygltf::Mesh& mesh = m_.meshes[size_t(node.mesh)];
+        for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const int sm = scene_mesh(node.mesh, int(p), s);
+            if (sm < 0) continue;
+            const int material = mesh.primitives[p].material;
+            if (material >= int(m_.materials.size())) fail("mesh " + std::to_string(node.mesh) + ": material " + std::to_string(material) + " does not exist");
+            for (const glm::dmat4& row : rows) {
+                if (s.instances.size() >= kMaxInstances) fail("more than " + std::to_string(kMaxInstances) + " instances");
+                s.instances.push_back({sm, material >= 0 ? material : default_material_, glm::dmat4(1.0), at, row});
+            }
+        }
+    }
+
+    // The scene mesh of mesh m's primitive p, read once; -1 for a primitive
+    // of points or lines.
+    int scene_mesh(int m, int p, Scene& s) {
+        const auto key = std::make_pair(m, p);
+        const auto it = meshes_.find(key);
+        if (it != meshes_.end()) return it->second;
+        const tinygltf::Primitive& prim = m_.meshes[size_t(m)].primitives[size_t(p)];
+        const std::string what = "mesh " + std::to_string(m) + " primitive " + std::to_string(p);
+        if (!prim.targets.empty()) morphs_ = true;
+        int result = -1;
+        if (prim.mode >= TINYGLTF_MODE_POINTS && prim.mode <= TINYGLTF_MODE_LINE_STRIP) {
+            ++skipped_points_lines_;
+        } else if (prim.mode < TINYGLTF_MODE_TRIANGLES || prim.mode > TINYGLTF_MODE_TRIANGLE_FAN) {
+            fail(what + ": mode " + std::to_string(prim.mode) + " is not glTF's");
+        } else {
+            result = int(s.meshes.size());
+            s.meshes.push_back({what, std::make_shared<Mesh>(read_primitive(prim, what))});
+        }
+        meshes_[key] = result;
+        return result;
+    }
+
+    Mesh read_primitive(const tinygltf::Primitive& prim, const std::string& what) const {
+        const auto position = prim.attributes.find("POSITION");
+        if (position == prim.attributes.end()) fail(what + ": no POSITION attribute");
+        Mesh mesh;
+        const std::vector<double> p = read_.numbers(position->second, 3, what + " POSITION");
+        const size_t vertices = p.size() / 3;
+        for (size_t i = 0; i < vertices; ++i) mesh.positions.push_back({p[3 * i], p[3 * i + 1], p[3 * i + 2]});
+        if (const auto normal = prim.attributes.find("NORMAL"); normal != prim.attributes.end()) {
+            const std::vector<double> n = read_.numbers(normal->second, 3, what + " NORMAL");
+            if (n.size() != p.size()) fail(what + ": NORMAL has " + std::to_string(n.size() / 3) + " elements, POSITION " + std::to_string(vertices));
+            for (size_t i = 0; i < vertices; ++i) mesh.normals.push_back({n[3 * i], n[3 * i + 1], n[3 * i + 2]});
+            mesh.smooth = true;
+        }
+        std::vector<std::uint32_t> index;
+        if (prim.indices >= 0) {
+            index = read_.indices(prim.indices, std::uint32_t(std::min<size_t>(vertices, 0xffffffffu)), what + " indices");
+        } else {
+            if (vertices > 0xffffffffu) fail(what + ": too many vertices");
+            index.resize(vertices);
+            for (size_t i = 0; i < vertices; ++i) index[i] = std::uint32_t(i);
+        }
+        // Triangles, strips and fans as the specification numbers them.
+        auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) { mesh.triangles.push_back({a, b, c}); };
+        const size_t n = index.size();
+        if (prim.mode == TINYGLTF_MODE_TRIANGLES) {
+            for (size_t i = 0; i + 2 < n; i += 3) add(index[i], index[i + 1], index[i + 2]);
+        } else if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            for (size_t i = 0; i + 2 < n; ++i)
+                add(index[i], index[i + 1 + i % 2], index[i + 2 - i % 2]);
+        } else {
+            for (size_t i = 1; i + 1 < n; ++i) add(index[i], index[i + 1], index[0]);
+        }
+        if (mesh.triangles.size() > kMaxMeshTriangles)
+            fail(what + ": " + std::to_string(mesh.triangles.size()) + " triangles (the limit is " + std::to_string(kMaxMeshTriangles) + ")");
+        return mesh;
+    }
+
+    // glTF cameras onto the report's (docs/gltf.md): the image plane 2 h
+    // tall at distance d, so tan(yfov / 2) = h / d; an orthographic camera
+    // sees ymag above and below its axis.
+    void add_camera(int index, int node, Scene& s) const {
+        if (size_t(index) >= m_.cameras.size()) fail("camera " + std::to_string(index) + " does not exist");
+        const tinygltf::Camera& c = m_.cameras[size_t(index)];
+        Camera cam;
+        cam.name = c.name.empty() ? "camera " + std::to_string(index) : c.name;
+        cam.node = node;
+        cam.width = 800;
+        if (c.type == "orthographic") {
+            const double xmag = c.orthographic.xmag, ymag = c.orthographic.ymag;
+            if (!(xmag > 0) || !(ymag > 0) || !std::isfinite(xmag) || !std::isfinite(ymag))
+                fail(cam.name + ": xmag and ymag must be > 0");
+            cam.projection = Projection::orthographic;
+            cam.half_height = ymag;
+            cam.height = std::clamp(int(std::lround(800 * ymag / xmag)), 1, 16384);
+        } else if (c.type == "perspective") {
+            const double yfov = c.perspective.yfov, aspect = c.perspective.aspectRatio;
+            if (!(yfov > 0 && yfov < std::numbers::pi)) fail(cam.name + ": yfov must be in (0, pi)");
+            cam.projection = Projection::perspective;
+            cam.projection_distance = 10 / std::tan(yfov / 2);
+            cam.height = aspect > 0 && std::isfinite(aspect) ? std::clamp(int(std::lround(800 / aspect)), 1, 16384) : 600;
+        } else {
+            fail(cam.name + ": camera type '" + c.type + "' is not perspective or orthographic");
+        }
+        s.cameras.push_back(cam);
+    }
+
+    // KHR_lights_punctual onto the report's lights (docs/gltf.md): colour
+    // 255 c; intensity exposure x lux (directional) or candela (point, spot)
+    // / 255, so 1 lux on a white surface facing it is 255. A spot's cone
+    // ends at outerConeAngle; a point light is a spot with no cone.
+    void add_light(int index, int node, Scene& s) const {
+        if (index < 0 || size_t(index) >= m_.lights.size()) fail("light " + std::to_string(index) + " does not exist");
+        const tinygltf::Light& l = m_.lights[size_t(index)];
+        const std::string name = l.name.empty() ? "light " + std::to_string(index) : l.name;
+        const dvec3 color = 255.0 * glm::clamp(vec3_or(l.color, dvec3(1)), 0.0, 1.0);
+        if (!(l.intensity >= 0) || !std::isfinite(l.intensity)) fail(name + ": intensity must be >= 0");
+        const double intensity = exposure_ * l.intensity / 255;
+        if (l.type == "directional") {
+            DirectionalLight<double> d;
+            d.name = name;
+            d.color = color;
+            d.intensity = intensity;
+            d.node = node;
+            s.directional_lights.push_back(d);
+        } else if (l.type == "point" || l.type == "spot") {
+            SpotLight<double> spot;
+            spot.name = name;
+            spot.color = color;
+            spot.intensity = intensity;
+            spot.node = node;
+            spot.max_angle = l.type == "point" ? kInfinity<double> : l.spot.outerConeAngle;
+            if (!(spot.max_angle > 0)) fail(name + ": outerConeAngle must be > 0");
+            s.spot_lights.push_back(spot);
+        } else {
+            fail(name + ": light type '" + l.type + "' is not directional, point or spot");
+        }
+    }
+
+    void add_animation(int index, GltfFile& out) {
+        const tinygltf::Animation& a = m_.animations[size_t(index)];
+        NodeAnimation anim;
+        anim.name = a.name.empty() ? "animation " + std::to_string(index) : a.name;
+        for (size_t k = 0; k < a.channels.size(); ++k) {
+            const tinygltf::AnimationChannel& c = a.channels[k];
+            const std::string what = anim.name + " channel " + std::to_string(k);
+            if (c.target_path == "weights") continue;  // morph weights: with morph targets, later
+            NodeChannel channel;
+            if (c.target_path == "translation") channel.property = NodeProperty::translation;
+            else if (c.target_path == "rotation") channel.property = NodeProperty::rotation;
+            else if (c.target_path == "scale") channel.property = NodeProperty::scale;
+            else fail(what + ": target path '" + c.target_path + "' is not translation, rotation, scale or weights");
+            if (c.target_node < 0 || size_t(c.target_node) >= m_.nodes.size())
+                fail(what + ": node " + std::to_string(c.target_node) + " does not exist");
+            channel.node = new_index_[size_t(c.target_node)];
+            if (channel.node < 0) continue;  // a node outside the scene shown
+            if (out.scene.nodes[size_t(channel.node)].has_matrix)
+                fail(what + ": node " + std::to_string(c.target_node) + " has a 'matrix', which cannot be animated");
+            if (c.sampler < 0 || size_t(c.sampler) >= a.samplers.size())
+                fail(what + ": sampler " + std::to_string(c.sampler) + " does not exist");
+            const tinygltf::AnimationSampler& sm = a.samplers[size_t(c.sampler)];
+            Sampler& s = channel.sampler;
+            s.rotation = channel.property == NodeProperty::rotation;
+            s.components = s.rotation ? 4 : 3;
+            if (sm.interpolation == "STEP") s.interpolation = Interpolation3::step;
+            else if (sm.interpolation == "CUBICSPLINE") s.interpolation = Interpolation3::cubic_spline;
+            else if (sm.interpolation.empty() || sm.interpolation == "LINEAR") s.interpolation = Interpolation3::linear;
+            else fail(what + ": interpolation '" + sm.interpolation + "' is not LINEAR, STEP or CUBICSPLINE");
+            s.times = read_.numbers(sm.input, 1, what + " input");
+            s.values = read_.numbers(sm.output, s.components, what + " output");
+            const size_t groups = s.interpolation == Interpolation3::cubic_spline ? 3 : 1;
+            if (s.values.size() != groups * s.times.size() * size_t(s.components))
+                fail(what + ": " + std::to_string(s.values.size() / size_t(s.components)) + " output values for " +
+                     std::to_string(s.times.size()) + " keys");
+            if (const std::string why = sampler_problem(s); !why.empty()) fail(what + ": " + why);
+            anim.channels.push_back(std::move(channel));
+        }
+        out.animations.push_back(std::move(anim));
+    }
+
+    const tinygltf::Model& m_;
+    std::string file_;
+    AccessorReader read_;
+    double exposure_;
+    std::vector<int> parent_, new_index_, order_;
+    std::map<std::pair<int, int>, int> meshes_;
+    int default_material_ = 0;
+    int skipped_points_lines_ = 0;
+    bool morphs_ = false;
+    std::vector<std::string> warnings_;
+};
+
+}  // namespace
+
+bool is_gltf_file(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".gltf" || ext == ".glb";
+}
+
+GltfFile load_gltf_from_memory(const std::string& bytes, const std::string& file, const std::string& folder,
+                               double exposure) {
+    std::vector<std::string> warnings;
+    const tinygltf::Model model = parse_gltf_model(bytes, file, folder, warnings);
+    GltfFile out = Converter(model, file, exposure).convert();
+    out.warnings.insert(out.warnings.end(), warnings.begin(), warnings.end());
+    return out;
+}
+
+GltfFile load_gltf(const std::string& path, double exposure) {
+    std::vector<std::string> warnings;
+    const tinygltf::Model model = read_gltf_model(path, warnings);
+    GltfFile out = Converter(model, path, exposure).convert();
+    out.warnings.insert(out.warnings.end(), warnings.begin(), warnings.end());
+    return out;
+}
+
+std::vector<NodeAnimation> add_gltf(Scene& scene, GltfFile file, const std::string& name, const Transform& transform,
+                                    int parent) {
+    Scene& g = file.scene;
+    const int materials = int(scene.materials.size()), meshes = int(scene.meshes.size()),
+              nodes = int(scene.nodes.size());
+    // The placement, and inside it glTF's y-up turned to firsthit's z-up.
+    scene.groups.push_back({name, transform, parent});
+    Transform up;
+    up.axis = {1, 0, 0};
+    up.radians = std::numbers::pi / 2;
+    scene.groups.push_back({name + " (y-up)", up, int(scene.groups.size()) - 1});
+    const int top = int(scene.groups.size()) - 1;
+    for (size_t m = 0; m < g.materials.size(); ++m) {
+        scene.material_names.push_back(name + "/" + g.material_names[m]);
+        scene.materials.push_back(g.materials[m]);
+    }
+    for (SceneMesh& m : g.meshes) scene.meshes.push_back({name + "/" + m.name, std::move(m.mesh)});
+    for (SceneNode n : g.nodes) {
+        if (n.parent >= 0) n.parent += nodes;
+        else n.group = top;
+        scene.nodes.push_back(std::move(n));
+    }
+    for (Instance i : g.instances) {
+        i.mesh += meshes;
+        i.material += materials;
+        i.node += nodes;
+        scene.instances.push_back(i);
+    }
+    for (Camera c : g.cameras) {
+        c.node += nodes;
+        scene.cameras.push_back(c);
+    }
+    for (auto l : g.directional_lights) {
+        l.node += nodes;
+        scene.directional_lights.push_back(l);
+    }
+    for (auto l : g.spot_lights) {
+        l.node += nodes;
+        scene.spot_lights.push_back(l);
+    }
+    for (NodeAnimation& a : file.animations)
+        for (NodeChannel& c : a.channels) c.node += nodes;
+    place_nodes(scene);
+    return std::move(file.animations);
+}
+
+void add_default_camera(Scene& scene) {
+    Aabb box;
+    for (const Instance& i : scene.instances)
+        for (const dvec3& p : scene.meshes[size_t(i.mesh)].mesh->positions) box.grow(dvec3(i.to_world * glm::dvec4(p, 1.0)));
+    for (const auto& t : scene.triangles) box.grow(t.v0), box.grow(t.v1), box.grow(t.v2);
+    for (const auto& s : scene.spheres()) box.grow(s.center - s.radius), box.grow(s.center + s.radius);
+    const dvec3 center = box.empty() ? dvec3(0) : box.center();
+    const double radius = box.empty() ? 1 : std::max(0.5 * glm::length(box.hi - box.lo), 1e-9);
+    Camera c;
+    c.name = "default";
+    c.width = 800;
+    c.height = 600;
+    // 45 degrees tall; far enough that the bounding sphere fills 90% of the height.
+    const double yfov = std::numbers::pi / 4;
+    c.projection_distance = 10 / std::tan(yfov / 2);
+    const dvec3 from = glm::normalize(dvec3(0.35, -1, 0.45));
+    c.view_point = center + from * (radius / std::sin(yfov / 2) / 0.9);
+    c.look_at = -from;
+    c.up = {0, 0, 1};
+    scene.cameras.push_back(c);
+}
+
+void add_default_lights(Scene& scene, const Camera& camera, double exposure, bool key_light) {
+    scene.ambient_lights.push_back({"ambient", dvec3(255), 0.15 * exposure / 255});
+    if (!key_light) return;
+    // 1 lux travelling as the camera looks, and down and to the right: from
+    // behind its upper left.
+    const CameraBasis b = camera_basis(camera.look_at, camera.up);
+    DirectionalLight<double> key;
+    key.name = "key";
+    key.color = dvec3(255);
+    key.intensity = exposure / 255;
+    key.direction = glm::normalize(-b.w - 0.8 * b.v + 0.5 * b.u);
+    scene.directional_lights.push_back(key);
+}
+
+}  // namespace fh

@@ -1,0 +1,251 @@
+// tinygltf's implementation, compiled here once, without its image writer
+// or its own image decoding (firsthit reads no textures yet).
+#define TINYGLTF_IMPLEMENTATION
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#define TINYGLTF_NO_STB_IMAGE
+#define TINYGLTF_NO_EXTERNAL_IMAGE
+#include "gltf/gltf_model.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+
+#include "text/input_error.h"
+
+namespace fh {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string>& supported_gltf_extensions() {
+    static const std::vector<std::string> names = {
+        "KHR_lights_punctual",           // directional, point and spot lights
+        "KHR_materials_emissive_strength",
+        "KHR_mesh_quantization",         // integer positions and normals
+        "EXT_mesh_gpu_instancing",       // a node's rows of placements
+    };
+    return names;
+}
+
+namespace {
+
+// What the callbacks need: where the model is, and the first problem seen.
+struct Folder {
+    fs::path dir;
+    std::string file;
+    std::string problem;
+};
+
+// Why a uri may not be read, or empty: it must name a file inside the
+// model's folder (or be a data: uri, which tinygltf decodes itself).
+std::string uri_problem(const std::string& uri) {
+    if (uri.rfind("data:", 0) == 0) return "";
+    if (uri.empty()) return "an empty uri";
+    const size_t colon = uri.find(':'), slash = uri.find('/');
+    if (colon != std::string::npos && (slash == std::string::npos || colon < slash))
+        return "uri '" + uri + "' has a scheme other than data: (a model reads only its own files)";
+    if (uri[0] == '/' || uri[0] == '\\') return "uri '" + uri + "' is absolute (a model reads only its own files)";
+    int depth = 0;
+    for (const fs::path& part : fs::path(uri)) {
+        if (part == "..") --depth;
+        else if (part != "." && !part.empty()) ++depth;
+        if (depth < 0) return "uri '" + uri + "' climbs out of the model's folder";
+    }
+    return "";
+}
+
+// tinygltf's file callbacks, confined to the model's folder.
+bool file_exists(const std::string& name, void* user) {
+    auto* folder = static_cast<Folder*>(user);
+    if (const std::string why = uri_problem(name); !why.empty()) {
+        if (folder->problem.empty()) folder->problem = why;
+        return false;
+    }
+    return fs::is_regular_file(folder->dir / name);
+}
+
+std::string expand_file_path(const std::string& path, void*) { return path; }  // no ~, no $VAR
+
+bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& name, void* user) {
+    auto* folder = static_cast<Folder*>(user);
+    if (const std::string why = uri_problem(name); !why.empty()) {
+        if (folder->problem.empty()) folder->problem = why;
+        if (err) *err = why;
+        return false;
+    }
+    const fs::path path = folder->dir / name;
+    std::error_code ec;
+    const auto size = fs::file_size(path, ec);
+    if (ec || !fs::is_regular_file(path)) {
+        if (folder->problem.empty()) folder->problem = "cannot read '" + name + "' (named by a uri)";
+        return false;
+    }
+    if (size > kMaxGltfBufferBytes) {
+        if (folder->problem.empty())
+            folder->problem = "'" + name + "' is " + std::to_string(size) + " bytes (the limit is 1 GiB)";
+        return false;
+    }
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) {
+        if (folder->problem.empty()) folder->problem = "cannot read '" + name + "' (named by a uri)";
+        return false;
+    }
+    out->resize(size);
+    const size_t n = size ? std::fread(out->data(), 1, size, f) : 0;
+    std::fclose(f);
+    if (n != size) {
+        if (folder->problem.empty()) folder->problem = "cannot read '" + name + "' whole";
+        return false;
+    }
+    return true;
+}
+
+bool write_whole_file(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err = "firsthit never writes through tinygltf";
+    return false;
+}
+
+// Images are not decoded (no textures yet): accepted as they are.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+    return true;
+}
+
+std::uint32_t u32(const std::string& b, size_t at) {
+    std::uint32_t v;
+    std::memcpy(&v, b.data() + at, 4);
+    return v;  // little-endian, as x86-64 is
+}
+
+// A GLB's JSON chunk, its header and chunk lengths checked against the file.
+std::string glb_json(const std::string& bytes, const std::string& file) {
+    if (bytes.size() < 20) throw InputError(file, "GLB file cut short: " + std::to_string(bytes.size()) + " bytes");
+    if (u32(bytes, 4) != 2) throw InputError(file, "GLB version " + std::to_string(u32(bytes, 4)) + " (glTF 2.0 is version 2)");
+    const std::uint64_t length = u32(bytes, 8);
+    if (length > bytes.size())
+        throw InputError(file, "GLB header says " + std::to_string(length) + " bytes, the file has " +
+                                   std::to_string(bytes.size()));
+    const std::uint64_t json_length = u32(bytes, 12);
+    if (u32(bytes, 16) != 0x4E4F534Au) throw InputError(file, "GLB's first chunk is not JSON");
+    if (20 + json_length > length)
+        throw InputError(file, "GLB's JSON chunk of " + std::to_string(json_length) + " bytes runs past the file (" +
+                                   std::to_string(length) + " bytes)");
+    const std::uint64_t bin_at = 20 + ((json_length + 3) & ~std::uint64_t(3));
+    if (bin_at + 8 <= length) {
+        const std::uint64_t bin_length = u32(bytes, size_t(bin_at));
+        if (bin_at + 8 + bin_length > length)
+            throw InputError(file, "GLB's binary chunk of " + std::to_string(bin_length) +
+                                       " bytes runs past the file (" + std::to_string(length) + " bytes)");
+    }
+    return bytes.substr(20, size_t(json_length));
+}
+
+// The JSON's line and column of byte `at`, 1-based.
+void position_of(const std::string& json, size_t at, int& line, int& column) {
+    line = 1;
+    column = 1;
+    for (size_t i = 0; i < at && i < json.size(); ++i) {
+        if (json[i] == '\n') ++line, column = 1;
+        else ++column;
+    }
+}
+
+// Checks on the JSON before tinygltf reads it: syntax (with its position),
+// required extensions, uris, and the sizes it asks for.
+void check_json(const std::string& json, const std::string& file) {
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(json);
+    } catch (const nlohmann::json::parse_error& e) {
+        int line, column;
+        position_of(json, e.byte > 0 ? e.byte - 1 : 0, line, column);
+        std::string what = e.what();
+        const size_t colon = what.find(": ", what.find("parse error"));
+        if (colon != std::string::npos) what = what.substr(colon + 2);
+        throw InputError(file, line, column, "JSON: " + what);
+    }
+    if (!j.is_object()) throw InputError(file, "a glTF file is a JSON object");
+    auto strings = [&](const char* key) {
+        std::vector<std::string> out;
+        if (j.contains(key) && j[key].is_array())
+            for (const auto& v : j[key])
+                if (v.is_string()) out.push_back(v.get<std::string>());
+        return out;
+    };
+    for (const std::string& ext : strings("extensionsRequired")) {
+        const auto& ok = supported_gltf_extensions();
+        if (std::find(ok.begin(), ok.end(), ext) == ok.end())
+            throw InputError(file, "requires the extension " + ext + ", which firsthit does not implement");
+    }
+    double buffer_bytes = 0;
+    for (const char* list : {"buffers", "images"}) {
+        if (!j.contains(list) || !j[list].is_array()) continue;
+        for (const auto& item : j[list]) {
+            if (!item.is_object()) continue;
+            if (item.contains("uri") && item["uri"].is_string())
+                if (const std::string why = uri_problem(item["uri"].get<std::string>()); !why.empty())
+                    throw InputError(file, std::string(list) + ": " + why);
+            if (std::string(list) == "buffers" && item.contains("byteLength") && item["byteLength"].is_number())
+                buffer_bytes += item["byteLength"].get<double>();
+        }
+    }
+    if (buffer_bytes > double(kMaxGltfBufferBytes))
+        throw InputError(file, "buffers of " + std::to_string(std::uint64_t(buffer_bytes)) +
+                                   " bytes in all (the limit is 1 GiB)");
+    if (j.contains("nodes") && j["nodes"].is_array() && j["nodes"].size() > kMaxGltfNodes)
+        throw InputError(file, std::to_string(j["nodes"].size()) + " nodes (the limit is " +
+                                   std::to_string(kMaxGltfNodes) + ")");
+}
+
+// tinygltf's error text as one line.
+std::string first_line(std::string s) {
+    const size_t nl = s.find('\n');
+    if (nl != std::string::npos) s.resize(nl);
+    while (!s.empty() && (s.back() == '\r' || s.back() == ' ' || s.back() == '.')) s.pop_back();
+    return s.empty() ? "tinygltf could not read it" : s;
+}
+
+}  // namespace
+
+tinygltf::Model parse_gltf_model(const std::string& bytes, const std::string& file, const std::string& folder,
+                                 std::vector<std::string>& warnings) {
+    if (bytes.size() > kMaxGltfFileBytes)
+        throw InputError(file, "file too large: " + std::to_string(bytes.size()) + " bytes (the limit is 1 GiB)");
+    const bool glb = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+    check_json(glb ? glb_json(bytes, file) : bytes, file);
+    Folder where{fs::path(folder), file, ""};
+    tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks({file_exists, expand_file_path, read_whole_file, write_whole_file, &where});
+    loader.SetImageLoader(skip_image, nullptr);
+    tinygltf::Model model;
+    std::string err, warn;
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const bool ok = glb ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(bytes.size()), "")
+                        : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), "");
+    if (!where.problem.empty()) throw InputError(file, where.problem);
+    if (!ok) throw InputError(file, first_line(err));
+    for (std::string line; !warn.empty();) {
+        const size_t nl = warn.find('\n');
+        line = warn.substr(0, nl);
+        warn = nl == std::string::npos ? "" : warn.substr(nl + 1);
+        if (!line.empty()) warnings.push_back(file + ": warning: " + line);
+    }
+    return model;
+}
+
+tinygltf::Model read_gltf_model(const std::string& path, std::vector<std::string>& warnings) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) throw InputError(path, "cannot read file: not a regular file, or missing");
+    const auto size = fs::file_size(path, ec);
+    if (ec) throw InputError(path, "cannot read file");
+    if (size > kMaxGltfFileBytes)
+        throw InputError(path, "file too large: " + std::to_string(size) + " bytes (the limit is 1 GiB)");
+    std::string bytes(size, '\0');
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) throw InputError(path, "cannot read file");
+    const size_t n = size ? std::fread(bytes.data(), 1, size, f) : 0;
+    std::fclose(f);
+    if (n != size) throw InputError(path, "cannot read file whole");
+    return parse_gltf_model(bytes, path, fs::path(path).parent_path().string(), warnings);
+}
+
+}  // namespace fh

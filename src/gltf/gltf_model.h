@@ -1,0 +1,38 @@
+// A glTF 2.0 file read by tinygltf (Debian's libtinygltf-dev), and nothing
+// else: a .gltf with its files or data: URIs, or a .glb. Before tinygltf sees
+// a byte the file is checked -- its size, a GLB's header and chunk lengths
+// against the file, the JSON's required extensions, every buffer's and
+// image's uri (relative, no scheme but data:, never out of the model's
+// folder) -- and tinygltf reads other files only through callbacks that
+// apply the same rules. Every problem is an InputError naming the file
+// (with the JSON's line and column where tinygltf's parser gives them).
+// Only the .cpp files of src/gltf include this header (tinygltf's types).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+
+namespace fh {
+
+// Documented limits, checked before anything is allocated for them.
+inline constexpr std::size_t kMaxGltfFileBytes = std::size_t(1) << 30;    // the .gltf or .glb itself
+inline constexpr std::size_t kMaxGltfBufferBytes = std::size_t(1) << 30;  // all its buffers together
+inline constexpr std::size_t kMaxGltfNodes = 1'000'000;
+
+// The extensions firsthit implements; a file that requires any other is
+// refused, naming it.
+const std::vector<std::string>& supported_gltf_extensions();
+
+// Reads the file at `path` (.gltf or .glb, by content: a GLB starts with
+// "glTF"); bad files throw InputError. `warnings` gets tinygltf's warnings.
+tinygltf::Model read_gltf_model(const std::string& path, std::vector<std::string>& warnings);
+
+// The same from bytes in memory (the fuzzer); external files are looked for
+// in `folder`.
+tinygltf::Model parse_gltf_model(const std::string& bytes, const std::string& file, const std::string& folder,
+                                 std::vector<std::string>& warnings);
+
+}  // namespace fh
