@@ -220,6 +220,7 @@ private:
         const tinygltf::Primitive& prim = m_.meshes[size_t(m)].primitives[size_t(p)];
         const std::string what = "mesh " + std::to_string(m) + " primitive " + std::to_string(p);
         if (!prim.targets.empty()) morphs_ = true;
+        check_primitive(prim, what);
         int result = -1;
         if (prim.mode >= TINYGLTF_MODE_POINTS && prim.mode <= TINYGLTF_MODE_LINE_STRIP) {
             ++skipped_points_lines_;
@@ -231,6 +232,38 @@ private:
         }
         meshes_[key] = result;
         return result;
+    }
+
+    // What the specification asks of every primitive, drawn or not: its
+    // attributes' accessors as many as POSITION's, a vertex count its mode
+    // can use (a multiple of 3 for triangles, of 2 for lines), and every
+    // texture coordinate set its material reads.
+    void check_primitive(const tinygltf::Primitive& prim, const std::string& what) const {
+        const auto position = prim.attributes.find("POSITION");
+        if (position == prim.attributes.end()) fail(what + ": no POSITION attribute");
+        const size_t vertices = read_.count(position->second, what + " POSITION");
+        for (const auto& [name, accessor] : prim.attributes)
+            if (read_.count(accessor, what + " " + name) != vertices)
+                fail(what + ": " + name + " has " + std::to_string(read_.count(accessor, what)) + " elements, POSITION " +
+                     std::to_string(vertices));
+        const size_t n = prim.indices >= 0 ? read_.count(prim.indices, what + " indices") : vertices;
+        const bool ok = prim.mode == TINYGLTF_MODE_TRIANGLES ? n % 3 == 0
+                        : prim.mode == TINYGLTF_MODE_LINE ? n % 2 == 0
+                        : prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP || prim.mode == TINYGLTF_MODE_TRIANGLE_FAN ? n >= 3
+                        : prim.mode == TINYGLTF_MODE_LINE_STRIP || prim.mode == TINYGLTF_MODE_LINE_LOOP ? n >= 2
+                                                                                                       : n >= 1;
+        if (!ok) fail(what + ": " + std::to_string(n) + (prim.indices >= 0 ? " indices" : " vertices") +
+                      " do not make whole " + (prim.mode <= TINYGLTF_MODE_LINE_STRIP ? "lines" : "triangles") +
+                      " in mode " + std::to_string(prim.mode));
+        if (prim.material < 0 || size_t(prim.material) >= m_.materials.size()) return;
+        const tinygltf::Material& mat = m_.materials[size_t(prim.material)];
+        for (const int set : {mat.pbrMetallicRoughness.baseColorTexture.index >= 0 ? mat.pbrMetallicRoughness.baseColorTexture.texCoord : -1,
+                              mat.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 ? mat.pbrMetallicRoughness.metallicRoughnessTexture.texCoord : -1,
+                              mat.normalTexture.index >= 0 ? mat.normalTexture.texCoord : -1,
+                              mat.occlusionTexture.index >= 0 ? mat.occlusionTexture.texCoord : -1,
+                              mat.emissiveTexture.index >= 0 ? mat.emissiveTexture.texCoord : -1})
+            if (set >= 0 && !prim.attributes.count("TEXCOORD_" + std::to_string(set)))
+                fail(what + ": its material reads TEXCOORD_" + std::to_string(set) + ", which it does not have");
     }
 
     Mesh read_primitive(const tinygltf::Primitive& prim, const std::string& what) const {

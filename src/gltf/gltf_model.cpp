@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "gltf/gltf_schema.h"
 #include "text/input_error.h"
 
 namespace fh {
@@ -61,7 +62,9 @@ bool file_exists(const std::string& name, void* user) {
         if (folder->problem.empty()) folder->problem = why;
         return false;
     }
-    return fs::is_regular_file(folder->dir / name);
+    if (fs::is_regular_file(folder->dir / name)) return true;
+    if (folder->problem.empty()) folder->problem = "cannot find '" + name + "' beside the model (named by a uri)";
+    return false;
 }
 
 std::string expand_file_path(const std::string& path, void*) { return path; }  // no ~, no $VAR
@@ -163,7 +166,7 @@ void check_json(const std::string& json, const std::string& file) {
         if (colon != std::string::npos) what = what.substr(colon + 2);
         throw InputError(file, line, column, "JSON: " + what);
     }
-    if (!j.is_object()) throw InputError(file, "a glTF file is a JSON object");
+    check_gltf_schema(j, file);
     auto strings = [&](const char* key) {
         std::vector<std::string> out;
         if (j.contains(key) && j[key].is_array())
