@@ -144,8 +144,9 @@ private:
 // the validator's warnings (unreferenced vertices, texture coordinates), an
 // OBJ `f` line with no vertices (skipped), a polygon that is not simple
 // (triangulated as a fan instead), texture coordinates declared 3-D that are
-// 2-D (we read none: assimp-testmodels' OBJ/regr01.obj). Any other message
-// fails the load.
+// 2-D (we read none: assimp-testmodels' OBJ/regr01.obj), an STL solid with
+// no facets beside others (a file of none still fails: "no triangles").
+// Any other message fails the load.
 bool harmless(const std::string& m) {
     static const char* const prefixes[] = {
         "Validation warning:",
@@ -159,6 +160,7 @@ bool harmless(const std::string& m) {
         "OBJ: No object detected to attach a new mesh instance",
         "Obj: Ignoring empty face",
         "Failed to triangulate polygon (no ear found)",
+        "STL: mesh is empty or invalid; no data loaded",  // an empty solid beside others
     };
     // (assimp puts its own prefix before this one.)
     if (contains(m, "UVs are declared to be 3D but they're obviously not")) return true;
@@ -481,8 +483,11 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
         MessageCollector log;
         Assimp::Importer importer;
         // Read and validated only, so coordinates are checked before
-        // JoinIdenticalVertices can merge a NaN away.
-        const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+        // JoinIdenticalVertices can merge a NaN away. STL is not validated:
+        // assimp makes its faces itself (always whole), and the validator
+        // refuses a file for one empty solid among others.
+        const unsigned validate = format == Format::stl ? 0u : unsigned(aiProcess_ValidateDataStructure);
+        const aiScene* scene = importer.ReadFile(path, validate);
         check_result(path, format, log, scene, importer, binary_ply);
         const bool all_normals = check_read(path, format, *scene, max_triangles);
         // Vertices that differ only in what we do not keep are one vertex.
