@@ -37,6 +37,10 @@ struct Folder {
     std::string problem;
 };
 
+// A uri as a message shows it: at most 60 characters (a data: uri can be
+// megabytes).
+std::string shown(const std::string& uri) { return uri.size() <= 60 ? uri : uri.substr(0, 57) + "..."; }
+
 // Why a uri may not be read, or empty: it must name a file inside the
 // model's folder (or be a data: uri, which tinygltf decodes itself).
 std::string uri_problem(const std::string& uri) {
@@ -44,15 +48,25 @@ std::string uri_problem(const std::string& uri) {
     if (uri.empty()) return "an empty uri";
     const size_t colon = uri.find(':'), slash = uri.find('/');
     if (colon != std::string::npos && (slash == std::string::npos || colon < slash))
-        return "uri '" + uri + "' has a scheme other than data: (a model reads only its own files)";
-    if (uri[0] == '/' || uri[0] == '\\') return "uri '" + uri + "' is absolute (a model reads only its own files)";
+        return "uri '" + shown(uri) + "' has a scheme other than data: (a model reads only its own files)";
+    if (uri[0] == '/' || uri[0] == '\\')
+        return "uri '" + shown(uri) + "' is absolute (a model reads only its own files)";
     int depth = 0;
     for (const fs::path& part : fs::path(uri)) {
         if (part == "..") --depth;
         else if (part != "." && !part.empty()) ++depth;
-        if (depth < 0) return "uri '" + uri + "' climbs out of the model's folder";
+        if (depth < 0) return "uri '" + shown(uri) + "' climbs out of the model's folder";
     }
     return "";
+}
+
+// Why a file a uri names cannot be read: a data: uri tinygltf did not
+// decode itself (it decodes base64 of glTF's media types), or a file that
+// is not there.
+std::string missing_file(const std::string& name) {
+    if (name.rfind("data:", 0) == 0)
+        return "a data: uri that is not base64 of a glTF media type ('" + shown(name) + "')";
+    return "cannot find '" + shown(name) + "' beside the model (named by a uri)";
 }
 
 // tinygltf's file callbacks, confined to the model's folder.
@@ -62,8 +76,9 @@ bool file_exists(const std::string& name, void* user) {
         if (folder->problem.empty()) folder->problem = why;
         return false;
     }
-    if (fs::is_regular_file(folder->dir / name)) return true;
-    if (folder->problem.empty()) folder->problem = "cannot find '" + name + "' beside the model (named by a uri)";
+    std::error_code ec;  // a name too long for the file system: not there
+    if (name.rfind("data:", 0) != 0 && fs::is_regular_file(folder->dir / name, ec)) return true;
+    if (folder->problem.empty()) folder->problem = missing_file(name);
     return false;
 }
 
@@ -79,25 +94,25 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
     const fs::path path = folder->dir / name;
     std::error_code ec;
     const auto size = fs::file_size(path, ec);
-    if (ec || !fs::is_regular_file(path)) {
-        if (folder->problem.empty()) folder->problem = "cannot read '" + name + "' (named by a uri)";
+    if (ec || !fs::is_regular_file(path, ec) || name.rfind("data:", 0) == 0) {
+        if (folder->problem.empty()) folder->problem = missing_file(name);
         return false;
     }
     if (size > kMaxGltfBufferBytes) {
         if (folder->problem.empty())
-            folder->problem = "'" + name + "' is " + std::to_string(size) + " bytes (the limit is 1 GiB)";
+            folder->problem = "'" + shown(name) + "' is " + std::to_string(size) + " bytes (the limit is 1 GiB)";
         return false;
     }
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) {
-        if (folder->problem.empty()) folder->problem = "cannot read '" + name + "' (named by a uri)";
+        if (folder->problem.empty()) folder->problem = "cannot read '" + shown(name) + "' (named by a uri)";
         return false;
     }
     out->resize(size);
     const size_t n = size ? std::fread(out->data(), 1, size, f) : 0;
     std::fclose(f);
     if (n != size) {
-        if (folder->problem.empty()) folder->problem = "cannot read '" + name + "' whole";
+        if (folder->problem.empty()) folder->problem = "cannot read '" + shown(name) + "' whole";
         return false;
     }
     return true;
@@ -152,18 +167,66 @@ void position_of(const std::string& json, size_t at, int& line, int& column) {
     }
 }
 
+// Arrays and objects nested deeper than this are refused before parsing:
+// tinygltf copies `extras` and `extensions` recursively, so depth is stack.
+constexpr int kMaxJsonNesting = 64;
+
+// The byte where the JSON's nesting first passes kMaxJsonNesting, or npos.
+size_t too_deep_at(const std::string& json) {
+    int depth = 0;
+    bool in_string = false;
+    for (size_t i = 0; i < json.size(); ++i) {
+        const char c = json[i];
+        if (in_string) {
+            if (c == '\\') ++i;
+            else if (c == '"') in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonNesting) return i;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return std::string::npos;
+}
+
+// nlohmann's message without its "[json.exception...] " prefix.
+std::string json_message(const nlohmann::json::exception& e) {
+    std::string what = e.what();
+    const size_t bracket = what.find("] ");
+    if (bracket != std::string::npos) what = what.substr(bracket + 2);
+    if (what.rfind("parse error", 0) == 0) {
+        const size_t colon = what.find(": ");
+        if (colon != std::string::npos) what = what.substr(colon + 2);
+    }
+    return what;
+}
+
 // Checks on the JSON before tinygltf reads it: syntax (with its position),
-// required extensions, uris, and the sizes it asks for.
+// nesting, required extensions, uris, and the sizes it asks for.
 void check_json(const std::string& json, const std::string& file) {
+    int line, column;
+    if (const size_t at = too_deep_at(json); at != std::string::npos) {
+        position_of(json, at, line, column);
+        throw InputError(file, line, column,
+                         "JSON: nested more than " + std::to_string(kMaxJsonNesting) + " arrays and objects deep");
+    }
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(json);
     } catch (const nlohmann::json::parse_error& e) {
-        int line, column;
         position_of(json, e.byte > 0 ? e.byte - 1 : 0, line, column);
-        std::string what = e.what();
-        const size_t colon = what.find(": ", what.find("parse error"));
-        if (colon != std::string::npos) what = what.substr(colon + 2);
+        throw InputError(file, line, column, "JSON: " + json_message(e));
+    } catch (const nlohmann::json::exception& e) {
+        // A number beyond double's range ("number overflow parsing '1e400'"):
+        // nlohmann gives no position, so the number's first place stands in.
+        std::string what = json_message(e);
+        const size_t open = what.find('\''), close = what.rfind('\'');
+        line = column = 0;
+        if (open != std::string::npos && close > open)
+            if (const size_t at = json.find(what.substr(open + 1, close - open - 1)); at != std::string::npos)
+                position_of(json, at, line, column);
         throw InputError(file, line, column, "JSON: " + what);
     }
     check_gltf_schema(j, file);

@@ -97,7 +97,10 @@ bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
         } else if (word == "element") {
             words >> name >> count;
             Element e{name, 0, 0};
-            if (!parse_count(count, e.count)) return binary;  // assimp's to report
+            // A count we cannot read is assimp's to report; the element
+            // counts as none, and the others are still checked (fuzzing
+            // found a 4-billion-vertex header hidden behind a garbled one).
+            if (!parse_count(count, e.count)) e.count = 0;
             elements.push_back(e);
         } else if (word == "property" && !elements.empty()) {
             words >> name;  // the type; for a list, the type of its length

@@ -440,6 +440,17 @@ TEST(MeshLoaderErrors, TruncatedBinaryPly) {
               "FILE: error: the PLY header has no end_header line (a truncated file?)");
 }
 
+TEST(MeshLoaderErrors, HugeAsciiPlyCountBehindAGarbledElement) {
+    // Found by fuzz/mesh_fuzzer.cpp: assimp would allocate 48 GB for the
+    // vertices; an unreadable element count once stopped the size check.
+    const std::string ply =
+        "ply\nformat ascii 1.0\nelement vertex 4294967295\nproperty float x\nproperty float y\n"
+        "element face many\nproperty list uchar int vertex_indices\nend_header\n0 0\n1 0\n0 1\n3 0 1 2\n";
+    EXPECT_EQ(mesh_error("huge.ply", ply),
+              "FILE: error: the PLY header declares element vertex 4294967295, element face 0 (at least "
+              "17179869179 bytes of data) but only 20 bytes follow it: a truncated file?");
+}
+
 TEST(MeshLoaderErrors, TruncatedOff) {
     const std::string off = cube_off();
     // assimp only logs it, and keeps faces without indices.
