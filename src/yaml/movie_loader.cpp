@@ -1,14 +1,14 @@
 #include "yaml/movie_loader.h"
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <filesystem>
-#include <sstream>
 #include <unordered_set>
 
 #include "gltf/gltf_loader.h"
 #include "gltf/gltf_movie.h"
+#include "yaml/key_list.h"
+#include "yaml/node_paths.h"
 #include "yaml/scene_loader.h"
 #include "yaml/map_reader.h"
 
@@ -80,13 +80,6 @@ void check_frame_count(const YamlReader& r, const MapReader& m, const Movie& mov
     r.fail(at, "fps * seconds gives more than " + std::to_string(kMaxMovieFrames) + " frames");
 }
 
-// 301, 7.5, 0.333333: a number as people write it.
-std::string number_text(double v) {
-    std::ostringstream out;
-    out << v;
-    return out.str();
-}
-
 std::string join(const std::vector<std::string>& words, size_t from, const char* sep = ".") {
     std::string out;
     for (size_t i = from; i < words.size(); ++i) out += (i > from ? sep : "") + words[i];
@@ -131,11 +124,11 @@ Target read_target(const YamlReader& r, const YAML::Node& at, const std::string&
     const Scene& scene = movie.scene;
     if (words[0] == "camera")
         return pick_property(r, at, path, "the camera", join(words, 1), camera_properties(movie.camera.projection));
-    const std::vector<std::string> kinds = {"camera", "lights", "surfaces", "materials"};
+    const std::vector<std::string> kinds = {"camera", "lights", "surfaces", "materials", "nodes"};
     if (std::find(kinds.begin(), kinds.end(), words[0]) == kinds.end() || words.size() < 3) {
         const std::string hint = closest_match(words[0], kinds);
         r.fail(at, "unknown property path '" + written + "': a path is camera.PROPERTY, lights.NAME.PROPERTY, "
-                   "surfaces.NAME.PROPERTY or materials.NAME.PROPERTY" +
+                   "surfaces.NAME.PROPERTY, materials.NAME.PROPERTY or nodes.NAME.PROPERTY" +
                    (hint.empty() || hint == words[0] ? "" : " (did you mean '" + hint + "'?)"));
     }
     const std::string& name = words[1];
@@ -202,32 +195,11 @@ Orbit read_orbit(const YamlReader& r, const YAML::Node& node) {
     return {m.vec3("center"), m.vec3("sin"), m.vec3("cos"), m.number_or("turns", 1)};
 }
 
-// Keys at `frame:` or `time:` (seconds: frame = time * fps), in increasing
-// order, inside the movie: 0 <= frame <= frame count (the movie's end).
+// Keys at `frame:` or `time:` (yaml/key_list.h), each value of the target's kind.
 Keyframes read_keyframes(const YamlReader& r, const MapReader& m, const Target& t, const Movie& movie) {
-    const YAML::Node list = m.value("keyframes");
-    r.expect_list(list, "'keyframes'");
-    if (list.size() == 0) r.fail(list, "'keyframes' must have at least one key");
     Keyframes k;
-    const int n = movie.frame_count();
-    for (const YAML::Node& item : list) {
-        const MapReader key(r, item, "keyframe", {"frame", "time", "value"});
-        if (key.has("frame") == key.has("time"))
-            r.fail(item, "a keyframe needs 'frame' (a frame index) or 'time' (seconds), one of them");
-        const bool timed = key.has("time");
-        const YAML::Node at = key.value(timed ? "time" : "frame");
-        const double frame = timed ? key.number_at_least("time", 0) * movie.fps : key.integer("frame", 0, INT_MAX);
-        if (frame > n + 1e-9 * n)
-            r.fail(at, "keyframe at " + (timed ? "time " + number_text(frame / movie.fps) + " s (frame " : "frame ") +
-                           number_text(frame) + (timed ? ")" : "") + " is past the movie's end (frame " +
-                           std::to_string(n) + ", " + number_text(movie.seconds) + " s)");
-        if (!k.keys.empty() && frame == k.keys.back().frame)
-            r.fail(at, "two keyframes at frame " + number_text(frame));
-        if (!k.keys.empty() && frame < k.keys.back().frame)
-            r.fail(at, "keyframes must be in increasing order: this one is at frame " + number_text(frame) +
-                           ", the one before at frame " + number_text(k.keys.back().frame));
-        k.keys.push_back({frame, read_value(r, key.value("value"), t)});
-    }
+    for (const KeyNode& key : read_key_list(r, m.value("keyframes"), movie))
+        k.keys.push_back({key.frame, read_value(r, key.value, t)});
     k.interpolation = t.kind == ValueKind::flag ? Interpolation::step : Interpolation::linear;
     if (m.has("interpolation")) {
         const std::vector<std::string> names = {"step", "linear", "catmull_rom", "ease_in", "ease_out", "ease_in_out"};
@@ -305,6 +277,10 @@ void read_animate(const YamlReader& r, const YAML::Node& node, Movie& movie) {
     if (node.IsNull()) return;
     const MapReader m(r, node, "'animate'", {});
     for (const MapReader::Entry& e : m.entries()) {
+        if (is_node_path(e.key)) {  // after the file's channels: it overrides them
+            movie.node_channels.push_back(read_node_path(r, e, movie));
+            continue;
+        }
         const Target t = read_target(r, e.key_node, e.key, movie);
         for (const Animation& a : movie.animations)
             if (a.target.path == t.path)

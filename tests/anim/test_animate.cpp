@@ -225,7 +225,7 @@ TEST(Animate, MistakesNameThePathAndTheFrame) {
               "FILE:5:3: error: no surface named 'bal' (a surface gets one with 'name:' in the scene) (did you mean 'ball'?)");
     EXPECT_EQ(movie_error("kind.yaml", "  surface.ball.center: [0, 0, 0]\n"),
               "FILE:5:3: error: unknown property path 'surface.ball.center': a path is camera.PROPERTY, lights.NAME.PROPERTY, "
-              "surfaces.NAME.PROPERTY or materials.NAME.PROPERTY (did you mean 'surfaces'?)");
+              "surfaces.NAME.PROPERTY, materials.NAME.PROPERTY or nodes.NAME.PROPERTY (did you mean 'surfaces'?)");
     EXPECT_EQ(movie_error("order.yaml", "  surfaces.ball.radius: {keyframes: [{frame: 3, value: 1}, {frame: 1, value: 2}]}\n"),
               "FILE:5:68: error: keyframes must be in increasing order: this one is at frame 1, the one before at frame 3");
     EXPECT_EQ(movie_error("flag.yaml", "  lights.sun.on: {keyframes: [{frame: 0, value: true}], interpolation: linear}\n"),

@@ -1,0 +1,179 @@
+// glTF files from the command line: `export` writes the world positions
+// worked out by hand (hierarchy, the file's animation, y-up turned z-up, a
+// YAML scene's placement, a movie's `nodes.NAME.*` paths), `frames` renders
+// as many frames as the animation lasts, `--camera` picks the file's
+// cameras by name or index, and each mistake is one line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "cli/run_command.h"
+#include "core/vec.h"
+#include "gltf/gltf_builder.h"
+
+namespace fh::test {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace fh::gltf_test;
+
+// Node "base" (scale 2, its translation animated LINEAR from (0,0,0) at 0 s
+// to (0,3,0) at 1 s) holds node "arm" (translation (1,2,3)) holding the
+// triangle (0,0,0) (1,0,0) (0,1,0); cameras "near" and "far" on nodes at
+// z = 10 and z = 20 looking down -z at it.
+std::string model() {
+    Bin bin;
+    const int positions = bin.f32({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    const int times = bin.f32({0, 1});
+    const int moves = bin.f32({0, 0, 0, 0, 3, 0});
+    const std::string v = std::to_string(positions), t = std::to_string(times), m = std::to_string(moves);
+    return gltf_json(R"("scenes": [{"nodes": [0, 2, 3]}],
+"nodes": [{"name": "base", "scale": [2, 2, 2], "children": [1]}, {"name": "arm", "translation": [1, 2, 3], "mesh": 0},
+          {"name": "near node", "camera": 0, "translation": [0.5, 0.5, 10]},
+          {"name": "far node", "camera": 1, "translation": [0.5, 0.5, 20]}],
+"cameras": [{"name": "near", "type": "perspective", "perspective": {"yfov": 0.8, "aspectRatio": 1, "znear": 0.1}},
+            {"name": "far", "type": "perspective", "perspective": {"yfov": 0.8, "aspectRatio": 1, "znear": 0.1}}],
+"meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+"accessors": [{"bufferView": )" + v + R"(, "componentType": 5126, "count": 3, "type": "VEC3"},
+              {"bufferView": )" + t + R"(, "componentType": 5126, "count": 2, "type": "SCALAR", "min": [0], "max": [1]},
+              {"bufferView": )" + m + R"(, "componentType": 5126, "count": 2, "type": "VEC3"}],
+"animations": [{"name": "slide", "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}],
+                "samplers": [{"input": 1, "output": 2, "interpolation": "LINEAR"}]}])",
+                     bin);
+}
+
+fs::path model_dir(const std::string& name) {
+    const fs::path dir = fresh_dir(name);
+    std::ofstream(dir / "model.gltf") << model();
+    return dir;
+}
+
+// The vertices `firsthit export ARGS -o OUT.obj` writes.
+std::vector<dvec3> exported(const std::string& args, const fs::path& dir) {
+    const fs::path out = dir / "out.obj";
+    const auto r = run_firsthit("export " + args + " --quiet -o " + out.string());
+    EXPECT_EQ(r.status, 0) << r.err;
+    std::vector<dvec3> v;
+    std::ifstream in(out);
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream words(line);
+        std::string tag;
+        dvec3 p;
+        if (words >> tag >> p.x >> p.y >> p.z && tag == "v") v.push_back(p);
+    }
+    return v;
+}
+
+void expect_near(const std::vector<dvec3>& got, const std::vector<dvec3>& want) {
+    ASSERT_EQ(got.size(), want.size());
+    for (size_t i = 0; i < got.size(); ++i)
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[i][k], want[i][k], 1e-9) << "vertex " << i << " axis " << k;
+}
+
+// A file point p lands at base(t) + 2 (arm + p), then y-up turns z-up:
+// (x, y, z) -> (x, -z, y). At frame 15 of 30 fps (0.5 s) base is (0,1.5,0):
+//   (0,0,0) -> (2,4,6)+(0,1.5,0) = (2,5.5,6) -> (2,-6,5.5)
+//   (1,0,0) -> (4,4,6)+(0,1.5,0) = (4,5.5,6) -> (4,-6,5.5)
+//   (0,1,0) -> (2,6,6)+(0,1.5,0) = (2,7.5,6) -> (2,-6,7.5)
+TEST(GltfCli, ExportIsTheWorldAfterHierarchyAndAnimation) {
+    const fs::path dir = model_dir("gltf_export");
+    const std::string file = (dir / "model.gltf").string();
+    expect_near(exported(file + " --frame 15", dir), {{2, -6, 5.5}, {4, -6, 5.5}, {2, -6, 7.5}});
+    // At 10 fps frame 5 is the same 0.5 s; frame 0 has base at the origin.
+    expect_near(exported(file + " --frame 5 --fps 10", dir), {{2, -6, 5.5}, {4, -6, 5.5}, {2, -6, 7.5}});
+    expect_near(exported(file + " --frame 0", dir), {{2, -6, 4}, {4, -6, 4}, {2, -6, 6}});
+}
+
+// Placed in a YAML scene, translated by (10, 0, 0) after the z-up turn.
+TEST(GltfCli, ExportOfAYamlSceneHoldingTheFile) {
+    const fs::path dir = model_dir("gltf_export_yaml");
+    std::ofstream(dir / "scene.yaml")
+        << "materials:\n  grey: {color: [200, 200, 200], ambient: 0.1, diffuse: 0.9, specular: 0, phong_exponent: 1}\n"
+           "lights:\n  ambient: {type: ambient, color: [255, 255, 255], intensity: 0.2}\n"
+           "cameras:\n  front: {type: perspective, width: 32, height: 32, view_point: [0, -20, 5],"
+           " look_at: [0, 1, 0], up: [0, 0, 1], projection_distance: 10}\n"
+           "surfaces:\n  - {type: gltf, name: model, file: model.gltf, transform: {translate: [10, 0, 0]}}\n";
+    expect_near(exported((dir / "scene.yaml").string(), dir), {{12, -6, 4}, {14, -6, 4}, {12, -6, 6}});
+}
+
+// A movie on the file at 10 fps: frame 5 is 0.5 s, where the file's own
+// animation has base at (0,1.5,0). A path moves node "arm" from (1,2,3) to
+// (1,2,5) over frames 0..10, so it is at (1,2,4):
+//   (0,0,0) -> 2 (1,2,4) + (0,1.5,0) = (2,5.5,8) -> z-up (2,-8,5.5).
+// A second path turns base a quarter turn about the file's y axis
+// (x -> -z, z -> x): 2 R (1,2,4) = 2 (4,2,-1) = (8,4,-2), + (0,1.5,0) =
+// (8,5.5,-2) -> z-up (8,2,5.5).
+TEST(GltfCli, MovieNodePathsMoveTheFilesNodes) {
+    const fs::path dir = model_dir("gltf_node_paths");
+    const std::string head = "scene: model.gltf\nfps: 10\nseconds: 1\nanimate:\n";
+    const std::string arm = "  nodes.arm.translation: {keyframes: [{frame: 0, value: [1, 2, 3]}, {frame: 10, value: [1, 2, 5]}]}\n";
+    std::ofstream(dir / "movie.yaml") << head << arm;
+    const auto v = exported((dir / "movie.yaml").string() + " --frame 5", dir);
+    ASSERT_EQ(v.size(), 3u);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(v[0][k], (dvec3{2, -8, 5.5})[k], 1e-9);
+    const std::string half = std::to_string(kHalfSqrt2);
+    std::ofstream(dir / "turn.yaml") << head << arm << "  nodes.base.rotation: [0, " << half << ", 0, " << half << "]\n";
+    const auto turned = exported((dir / "turn.yaml").string() + " --frame 5", dir);
+    ASSERT_EQ(turned.size(), 3u);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(turned[0][k], (dvec3{8, 2, 5.5})[k], 1e-9);
+}
+
+TEST(GltfCli, NodePathMistakesAreOneLine) {
+    const fs::path dir = model_dir("gltf_node_path_errors");
+    auto error_of = [&](const std::string& animate) {
+        std::ofstream(dir / "movie.yaml") << "scene: model.gltf\nfps: 10\nseconds: 1\nanimate:\n  " << animate << "\n";
+        const auto r = run_firsthit("render " + (dir / "movie.yaml").string() + " -o " + (dir / "x.png").string());
+        EXPECT_EQ(r.status, 2) << r.err;
+        EXPECT_FALSE(fs::exists(dir / "x.png"));
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        std::string line = r.err.substr(0, r.err.find('\n'));
+        return line.replace(0, dir.string().size(), "DIR");
+    };
+    EXPECT_EQ(error_of("nodes.amr.translation: [0, 0, 0]"),
+              "DIR/movie.yaml:5:3: error: no node named 'amr' in the scene's glTF files (did you mean 'arm'?)");
+    EXPECT_EQ(error_of("nodes.arm.rotaton: [0, 0, 0, 1]"),
+              "DIR/movie.yaml:5:3: error: unknown property 'rotaton' in 'nodes.arm.rotaton': a node can animate "
+              "translation, rotation, scale (did you mean 'rotation'?)");
+    EXPECT_EQ(error_of("nodes.arm.rotation: [0, 0, 1]"),
+              "DIR/movie.yaml:5:23: error: 'nodes.arm.rotation' must be a quaternion [x, y, z, w], got a list");
+    EXPECT_EQ(error_of("nodes.arm.rotation: [0, 0, 0, 0]"),
+              "DIR/movie.yaml:5:23: error: 'nodes.arm.rotation' must not be the zero quaternion");
+    EXPECT_EQ(error_of("nodes.arm.scale: [1, 0, 1]"),
+              "DIR/movie.yaml:5:20: error: 'nodes.arm.scale' must not be 0 on any axis");
+    EXPECT_EQ(error_of("nodes.arm.scale: {keyframes: [{frame: 0, value: 1}], interpolation: catmull_rom}"),
+              "DIR/movie.yaml:5:71: error: unknown node interpolation 'catmull_rom' (expected step or linear)");
+}
+
+// 1 s of animation at 10 fps: frames 0..10, the last on the last key.
+TEST(GltfCli, FramesRenderTheAnimationsLength) {
+    const fs::path dir = model_dir("gltf_frames");
+    const auto r = run_firsthit("frames " + (dir / "model.gltf").string() + " --fps 10 --resolution 24x24 --threads 2 --out " +
+                                (dir / "frames").string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    int pngs = 0;
+    for (const auto& e : fs::directory_iterator(dir / "frames")) pngs += e.path().extension() == ".png";
+    EXPECT_EQ(pngs, 11);
+}
+
+TEST(GltfCli, CameraByNameOrIndex) {
+    const fs::path dir = model_dir("gltf_cameras");
+    const std::string file = (dir / "model.gltf").string();
+    auto render = [&](const std::string& camera, const std::string& out) {
+        const auto r = run_firsthit("render " + file + " --camera '" + camera + "' --resolution 32x32 -o " +
+                                    (dir / out).string());
+        EXPECT_EQ(r.status, 0) << r.err;
+        return slurp(dir / out);
+    };
+    EXPECT_EQ(render("far", "a.png"), render("1", "b.png"));
+    EXPECT_EQ(render("near", "c.png"), render("0", "d.png"));
+    EXPECT_NE(render("near", "c.png"), render("far", "a.png"));  // farther: a smaller triangle
+    const auto r = run_firsthit("render " + file + " --camera fra -o " + (dir / "e.png").string());
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "firsthit: error: no camera 'fra' in " + file + " (did you mean 'far'?); it has 0 'near', 1 'far'\n");
+    EXPECT_FALSE(fs::exists(dir / "e.png"));
+}
+
+}  // namespace
+}  // namespace fh::test
