@@ -33,10 +33,12 @@
 // to stderr too. firsthit_bench_scaling traces in double unless given
 // --precision float; this traces in float, as Embree does.
 //   firsthit_embree_reference [--threads N] [--runs K] [--max-level K] [--png OUT.png]
-//                             [--bunny FILE.off] [--placements FILE.csv] [--width 4|8|16] [--verbose]
+//                             [--bunny FILE.off] [--world] [--placements FILE.csv] [--width 4|8|16] [--verbose]
 // --png writes the bunny's frame (the last icosphere's without the bunny);
 // --bunny: default animations/meshes/bunny00.off of this source tree (bash
 // scripts/fetch_meshes.sh fetches it); missing, the bunny row is left out.
+// --world: the --bunny file is already in the world (as `firsthit export`
+// writes a scene; scripts/bench_gltf.sh), not placed as the bunny is.
 // --placements FILE.csv: instead, only the instancing benchmark's scene
 // (scripts/bunny_grid.sh): the bunny placed by each row, as Embree
 // instances (RTC_GEOMETRY_TYPE_INSTANCE) over one mesh scene.
@@ -144,15 +146,17 @@ SceneSpec icosphere_scene(int level) {
 // about x (composed as scene_loader.cpp's read_transform does: translate *
 // rotate * scale), grey, on the floor z = -2.2078 of colour (140, 170, 200).
 // Triangles the transform leaves without area are dropped, as firsthit does.
-SceneSpec bunny_scene(const std::string& path) {
+SceneSpec bunny_scene(const std::string& path, bool world) {
     const fh::MeshData mesh = fh::load_mesh(path);
     glm::dmat4 t(1.0);
-    t = glm::rotate(t, glm::radians(90.0), glm::normalize(dvec3(1, 0, 0)));
-    t = glm::scale(t, dvec3(4.4743));
+    if (!world) {  // as animations/bunny.yaml places the bunny
+        t = glm::rotate(t, glm::radians(90.0), glm::normalize(dvec3(1, 0, 0)));
+        t = glm::scale(t, dvec3(4.4743));
+    }
     std::vector<dvec3> p(mesh.positions.size());
     for (size_t i = 0; i < p.size(); ++i) p[i] = dvec3(t * glm::dvec4(mesh.positions[i], 1.0));
     SceneSpec s;
-    s.name = "bunny";
+    s.name = world ? std::filesystem::path(path).stem().string() : "bunny";
     for (const dvec3& q : p) s.vertices.insert(s.vertices.end(), {float(q.x), float(q.y), float(q.z)});
     for (const auto& tri : mesh.triangles) {
         if (fh::Triangle<double>::make(p[tri[0]], p[tri[1]], p[tri[2]], 0).degenerate()) continue;
@@ -649,7 +653,7 @@ Frame run(RTCDevice device, const SceneSpec& spec, const Blocks& blocks, Workers
 
 int main(int argc, char** argv) {
     int threads = 2, runs = 9, max_level = 8, width = 0;
-    bool verbose = false, unknown = false;
+    bool verbose = false, unknown = false, world = false;
     std::string png, placements, bunny = std::string(FIRSTHIT_SOURCE_DIR) + "/animations/meshes/bunny00.off";
     for (int i = 1; i < argc; ++i) {
         const bool has_value = i + 1 < argc;
@@ -661,11 +665,12 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--bunny") && has_value) bunny = argv[++i];
         else if (!std::strcmp(argv[i], "--placements") && has_value) placements = argv[++i];
         else if (!std::strcmp(argv[i], "--verbose")) verbose = true;
+        else if (!std::strcmp(argv[i], "--world")) world = true;
         else unknown = true;
         if (unknown || (width != 0 && width != 4 && width != 8 && width != 16)) {
             std::fprintf(stderr,
                          "usage: firsthit_embree_reference [--threads N] [--runs K] [--max-level K] "
-                         "[--png OUT.png] [--bunny FILE.off] [--placements FILE.csv] [--width 4|8|16] [--verbose]\n");
+                         "[--png OUT.png] [--bunny FILE.off] [--world] [--placements FILE.csv] [--width 4|8|16] [--verbose]\n");
             return 2;
         }
     }
@@ -717,7 +722,7 @@ int main(int argc, char** argv) {
                      bunny.c_str());
     } else {
         try {
-            last = run(device, bunny_scene(bunny), blocks, workers, runs);
+            last = run(device, bunny_scene(bunny, world), blocks, workers, runs);
             have_bunny = true;
         } catch (const std::exception& e) {
             std::fprintf(stderr, "embree_reference: %s\n", e.what());
