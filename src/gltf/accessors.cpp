@@ -120,8 +120,11 @@ std::vector<double> AccessorReader::numbers(int index, int components, const std
              std::to_string(components_of(a.type)));
     if (bytes_of(a.componentType) == 0 || a.componentType == TINYGLTF_COMPONENT_TYPE_DOUBLE)
         fail(named + ": component type " + std::to_string(a.componentType) + " is not glTF's");
-    // A count a buffer could never hold is refused before anything is allocated.
-    if (a.count > kMaxGltfBufferBytes) fail(named + ": " + std::to_string(a.count) + " elements");
+    // Refused before anything is allocated: a sparse accessor without a
+    // buffer view is zeros of any count, whatever the file's size.
+    if (a.count > kMaxGltfAccessorValues / std::size_t(components))
+        fail(named + ": " + std::to_string(a.count) + " elements of " + std::to_string(components) +
+             " numbers are more than one accessor may hold (" + std::to_string(kMaxGltfAccessorValues) + " numbers)");
     std::vector<double> out;
     if (a.bufferView >= 0) {
         read_view(a.bufferView, a.byteOffset, a.count, components, a.componentType, a.normalized, out, named);

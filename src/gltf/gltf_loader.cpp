@@ -73,6 +73,13 @@ public:
         s.materials.push_back(material_of(tinygltf::Material{}));
         order_nodes();
         for (const int n : order_) add_node(n, s);
+        // Each node's own numbers are finite; their products must be too
+        // (a scale of 1e200 under another is infinite).
+        const std::vector<glm::dmat4> world = node_matrices(s);
+        for (size_t n = 0; n < world.size(); ++n)
+            for (int k = 0; k < 16; ++k)
+                if (!std::isfinite(world[n][k / 4][k % 4]))
+                    fail(s.nodes[n].name + ": its transform times its parents' is not finite (past a double's range)");
         for (size_t a = 0; a < m_.animations.size(); ++a) add_animation(int(a), out);
         if (skipped_points_lines_ > 0)
             warn(std::to_string(skipped_points_lines_) + " primitive(s) of points or lines skipped (triangles only)");
@@ -100,6 +107,19 @@ private:
                          " and " + std::to_string(p) + ")");
                 parent[size_t(c)] = int(p);
             }
+        // One parent each, so a cycle is a loop of parents, found anywhere in
+        // the file (shown or not): follow each node's parents until a node
+        // already followed; one met again on this same walk closes a loop.
+        std::vector<int> walked_from(n, -1);
+        for (size_t start = 0; start < n; ++start) {
+            int x = int(start);
+            while (x >= 0 && walked_from[size_t(x)] < 0) {
+                walked_from[size_t(x)] = int(start);
+                x = parent[size_t(x)];
+            }
+            if (x >= 0 && walked_from[size_t(x)] == int(start))
+                fail("node " + std::to_string(x) + " is its own ancestor (a cycle)");
+        }
         std::vector<int> roots;
         if (m_.scenes.empty()) fail("the file has no scene to show (no 'scenes')");
         int scene = m_.defaultScene >= 0 ? m_.defaultScene : 0;
@@ -107,10 +127,9 @@ private:
         roots = m_.scenes[size_t(scene)].nodes;
         if (roots.empty()) fail("scene " + std::to_string(scene) + " has no nodes: nothing to show");
         new_index_.assign(n, -1);
-        std::vector<int> state(n, 0);  // 0 unseen, 1 on the path, 2 done
+        std::vector<int> state(n, 0);  // 0 unseen, 1 on the path, 2 done (cycles are refused above)
         std::function<void(int, int)> visit = [&](int node, int depth) {
             if (node < 0 || size_t(node) >= n) fail("scene node " + std::to_string(node) + " does not exist");
-            if (state[size_t(node)] == 1) fail("node " + std::to_string(node) + " is its own ancestor (a cycle)");
             if (state[size_t(node)] == 2) fail("node " + std::to_string(node) + " is reached twice");
             if (depth > 10'000) fail("nodes nested more than 10,000 deep");
             state[size_t(node)] = 1;

@@ -21,6 +21,8 @@ namespace fh {
 inline constexpr std::size_t kMaxGltfFileBytes = std::size_t(1) << 30;    // the .gltf or .glb itself
 inline constexpr std::size_t kMaxGltfBufferBytes = std::size_t(1) << 30;  // all its buffers together
 inline constexpr std::size_t kMaxGltfNodes = 1'000'000;
+// Numbers one accessor may hold (components x count: 2^26, 512 MiB read as doubles).
+inline constexpr std::size_t kMaxGltfAccessorValues = std::size_t(1) << 26;
 
 // The extensions firsthit implements; a file that requires any other is
 // refused, naming it.

@@ -8,14 +8,19 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
+
+#include "core/vec.h"
 #include "text/input_error.h"
 
 namespace fh::gltf_test {
@@ -143,6 +148,15 @@ inline std::string accessor(int view, int component_type, size_t count, const st
            ", \"count\": " + std::to_string(count) + ", \"type\": \"" + type + "\"" + more + "}";
 }
 
+// An accessor's sparse member (for accessor()'s `more`): `count` elements
+// at the indices in view `indices` (of `index_type`) take the values in view
+// `values`.
+inline std::string sparse(int count, int indices, int index_type, int values) {
+    return ", \"sparse\": {\"count\": " + std::to_string(count) + ", \"indices\": {\"bufferView\": " +
+           std::to_string(indices) + ", \"componentType\": " + std::to_string(index_type) +
+           "}, \"values\": {\"bufferView\": " + std::to_string(values) + "}}";
+}
+
 // A scene of one node holding mesh 0, a triangle (0,0,0) (1,0,0) (0,1,0);
 // `bin` gets its positions as view `view`.
 inline std::string triangle_body(Bin& bin) {
@@ -150,6 +164,59 @@ inline std::string triangle_body(Bin& bin) {
     return R"("scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
 "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
 "accessors": [{"bufferView": )" + std::to_string(view) + R"(, "componentType": 5126, "count": 3, "type": "VEC3"}])";
+}
+
+// Mesh 0, the triangle (0,0,0) (1,0,0) (0,1,0) read by accessor 0, and
+// `more` accessors after it (", {...}", from index 1); the caller adds the
+// scenes and nodes.
+inline std::string triangle_mesh(Bin& bin, const std::string& more = "") {
+    const int view = bin.f32({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    return R"("meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "accessors": [)" +
+           accessor(view, kFloat, 3, "VEC3") + more + "]";
+}
+
+// A file of one node holding mesh 0, whose primitives and accessors are given.
+inline std::string one_mesh(const Bin& bin, const std::string& primitives, const std::string& accessors) {
+    return gltf_json(R"("scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}], "meshes": [{"primitives": [)" + primitives +
+                         "]}], \"accessors\": [" + accessors + "]",
+                     bin);
+}
+
+// JSON items joined by commas: "a, b, c".
+inline std::string joined(std::initializer_list<std::string> items) {
+    std::string s;
+    for (const std::string& i : items) s += (s.empty() ? "" : ", ") + i;
+    return s;
+}
+
+// An animation's channel (sampler `sampler` driving `path` of `node`) and
+// sampler (times from accessor `input`, values from `output`); the
+// "animations" member of one animation of such channels and samplers.
+inline std::string channel(int sampler, int node, const std::string& path) {
+    return "{\"sampler\": " + std::to_string(sampler) + ", \"target\": {\"node\": " + std::to_string(node) +
+           ", \"path\": \"" + path + "\"}}";
+}
+inline std::string sampler(int input, int output, const std::string& interpolation) {
+    return "{\"input\": " + std::to_string(input) + ", \"output\": " + std::to_string(output) +
+           ", \"interpolation\": \"" + interpolation + "\"}";
+}
+
+inline std::string animation(const std::string& channels, const std::string& samplers) {
+    return "\"animations\": [{\"channels\": [" + channels + "], \"samplers\": [" + samplers + "]}]";
+}
+
+inline void expect_vec(const dvec3& got, const dvec3& want, double tol = 1e-12) {
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(got[i], want[i], tol) << "component " << i << " of (" << got.x << ", " << got.y << ", " << got.z
+                                          << ")";
+}
+
+// `got` against a matrix written by hand, row by row.
+inline void expect_matrix(const glm::dmat4& got, const std::array<std::array<double, 4>, 4>& rows,
+                          double tol = 1e-12) {
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            EXPECT_NEAR(got[c][r], rows[size_t(r)][size_t(c)], tol) << "row " << r << ", column " << c;
 }
 
 // `load` must throw one InputError naming `file`, on one line, whose
