@@ -220,6 +220,8 @@ void scene_at(const Movie& movie, int frame, Scene& scene) {
         if (!groups_move) place_nodes(scene);  // (place_groups places the nodes too)
     }
     if (groups_move) place_groups(scene);
+    // Morphs and skins follow their nodes (a group's move leaves them as they are).
+    if (!movie.node_channels.empty()) deform_meshes(scene);
 }
 
 std::vector<int> check_animations(const Movie& movie) {

@@ -27,6 +27,7 @@ void apply_channels(const std::vector<NodeChannel>& channels, double t, Scene& s
         case NodeProperty::translation: n.translation = {v[0], v[1], v[2]}; break;
         case NodeProperty::scale: n.scale = {v[0], v[1], v[2]}; break;
         case NodeProperty::rotation: n.rotation = glm::dquat(v[3], v[0], v[1], v[2]); break;  // w, x, y, z
+        case NodeProperty::weights: n.weights = v; break;
         }
     }
 }

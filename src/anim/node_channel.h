@@ -13,7 +13,7 @@ namespace fh {
 
 struct Scene;
 
-enum class NodeProperty { translation, rotation, scale };
+enum class NodeProperty { translation, rotation, scale, weights };
 
 struct NodeChannel {
     int node = 0;  // into Scene::nodes

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gltf/accessors.h"
+#include "gltf/gltf_deform.h"
 #include "meshes/mesh_loader.h"
 #include "text/input_error.h"
 
@@ -83,8 +84,6 @@ public:
         for (size_t a = 0; a < m_.animations.size(); ++a) add_animation(int(a), out);
         if (skipped_points_lines_ > 0)
             warn(std::to_string(skipped_points_lines_) + " primitive(s) of points or lines skipped (triangles only)");
-        if (!m_.skins.empty()) warn("skins are drawn in their bind pose (skinning is not implemented yet)");
-        if (morphs_) warn("morph targets are drawn unmorphed (morphing is not implemented yet)");
         if (!m_.textures.empty()) warn("textures are not drawn yet: materials show their base colour factor");
         out.warnings.insert(out.warnings.begin(), warnings_.begin(), warnings_.end());
         return out;
@@ -218,9 +217,23 @@ private:
         if (size_t(node.mesh) >= m_.meshes.size()) fail(s.nodes[size_t(at)].name + ": mesh " + std::to_string(node.mesh) + " does not exist");
         const std::vector<glm::dmat4> rows = rows_of(node, s.nodes[size_t(at)].name);
         const tinygltf::Mesh& mesh = m_.meshes[size_t(node.mesh)];
+        // A morphed or skinned mesh is this node's own copy: its pose is the node's.
+        const size_t targets = morph_target_count(node.mesh);
+        const bool deformed = node.skin >= 0 || targets > 0;
+        if (targets > 0) {
+            std::vector<double> w = !node.weights.empty() ? node.weights : mesh.weights;
+            if (w.empty()) w.assign(targets, 0.0);
+            if (w.size() != targets)
+                fail(s.nodes[size_t(at)].name + ": " + std::to_string(w.size()) + " morph weights for " +
+                     std::to_string(targets) + " targets");
+            for (const double x : w)
+                if (!std::isfinite(x)) fail(s.nodes[size_t(at)].name + ": a morph weight is not finite");
+            s.nodes[size_t(at)].weights = std::move(w);
+        }
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-            const int sm = scene_mesh(node.mesh, int(p), s);
+            int sm = scene_mesh(node.mesh, int(p), s);
             if (sm < 0) continue;
+            if (deformed) sm = add_deformation(node, at, node.mesh, int(p), sm, s);
             const int material = mesh.primitives[p].material;
             if (material >= int(m_.materials.size())) fail("mesh " + std::to_string(node.mesh) + ": material " + std::to_string(material) + " does not exist");
             for (const glm::dmat4& row : rows) {
@@ -228,6 +241,44 @@ private:
                 s.instances.push_back({sm, material >= 0 ? material : default_material_, glm::dmat4(1.0), at, row});
             }
         }
+    }
+
+    // How many morph targets mesh m has: the same for each of its
+    // primitives, as the specification requires.
+    size_t morph_target_count(int m) const {
+        const tinygltf::Mesh& mesh = m_.meshes[size_t(m)];
+        const size_t n = mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
+        for (const tinygltf::Primitive& p : mesh.primitives)
+            if (p.targets.size() != n) fail("mesh " + std::to_string(m) + ": its primitives have different numbers of morph targets");
+        return n;
+    }
+
+    // Node `at`'s own copy of a morphed or skinned primitive (its scene mesh
+    // `shared` as the rest pose), with how it deforms; returns the copy's
+    // scene mesh.
+    int add_deformation(const tinygltf::Node& node, int at, int m, int p, int shared, Scene& s) {
+        const tinygltf::Primitive& prim = m_.meshes[size_t(m)].primitives[size_t(p)];
+        const std::string what = "mesh " + std::to_string(m) + " primitive " + std::to_string(p) + " on " + s.nodes[size_t(at)].name;
+        Deformation d;
+        d.rest = s.meshes[size_t(shared)].mesh;
+        d.node = at;
+        d.mesh = int(s.meshes.size());
+        const size_t vertices = d.rest->positions.size();
+        d.targets = read_morph_targets(prim, read_, vertices, what);
+        if (node.skin >= 0) {
+            if (size_t(node.skin) >= m_.skins.size()) fail(what + ": skin " + std::to_string(node.skin) + " does not exist");
+            const tinygltf::Skin& skin = m_.skins[size_t(node.skin)];
+            std::vector<int> joints;
+            for (const int j : skin.joints) {
+                if (j < 0 || size_t(j) >= m_.nodes.size()) fail(what + ": joint node " + std::to_string(j) + " does not exist");
+                if (new_index_[size_t(j)] < 0) fail(what + ": joint node " + std::to_string(j) + " is not in the scene shown");
+                joints.push_back(new_index_[size_t(j)]);
+            }
+            d.skin = read_skin(skin, prim, read_, vertices, std::move(joints), what);
+        }
+        s.meshes.push_back({s.meshes[size_t(shared)].name + " on " + s.nodes[size_t(at)].name, d.rest});
+        s.deformations.push_back(std::move(d));
+        return int(s.meshes.size()) - 1;
     }
 
     // The scene mesh of mesh m's primitive p, read once; -1 for a primitive
@@ -238,7 +289,6 @@ private:
         if (it != meshes_.end()) return it->second;
         const tinygltf::Primitive& prim = m_.meshes[size_t(m)].primitives[size_t(p)];
         const std::string what = "mesh " + std::to_string(m) + " primitive " + std::to_string(p);
-        if (!prim.targets.empty()) morphs_ = true;
         check_primitive(prim, what);
         int result = -1;
         if (prim.mode >= TINYGLTF_MODE_POINTS && prim.mode <= TINYGLTF_MODE_LINE_STRIP) {
@@ -390,11 +440,11 @@ private:
         for (size_t k = 0; k < a.channels.size(); ++k) {
             const tinygltf::AnimationChannel& c = a.channels[k];
             const std::string what = anim.name + " channel " + std::to_string(k);
-            if (c.target_path == "weights") continue;  // morph weights: with morph targets, later
             NodeChannel channel;
             if (c.target_path == "translation") channel.property = NodeProperty::translation;
             else if (c.target_path == "rotation") channel.property = NodeProperty::rotation;
             else if (c.target_path == "scale") channel.property = NodeProperty::scale;
+            else if (c.target_path == "weights") channel.property = NodeProperty::weights;
             else fail(what + ": target path '" + c.target_path + "' is not translation, rotation, scale or weights");
             if (c.target_node < 0 || size_t(c.target_node) >= m_.nodes.size())
                 fail(what + ": node " + std::to_string(c.target_node) + " does not exist");
@@ -408,12 +458,20 @@ private:
             Sampler& s = channel.sampler;
             s.rotation = channel.property == NodeProperty::rotation;
             s.components = s.rotation ? 4 : 3;
+            if (channel.property == NodeProperty::weights) {
+                const tinygltf::Node& target = m_.nodes[size_t(c.target_node)];
+                const size_t targets = target.mesh >= 0 && size_t(target.mesh) < m_.meshes.size() ? morph_target_count(target.mesh) : 0;
+                if (targets == 0) fail(what + ": weights of node " + std::to_string(c.target_node) + ", which has no morph targets");
+                s.components = int(targets);
+            }
             if (sm.interpolation == "STEP") s.interpolation = Interpolation3::step;
             else if (sm.interpolation == "CUBICSPLINE") s.interpolation = Interpolation3::cubic_spline;
             else if (sm.interpolation.empty() || sm.interpolation == "LINEAR") s.interpolation = Interpolation3::linear;
             else fail(what + ": interpolation '" + sm.interpolation + "' is not LINEAR, STEP or CUBICSPLINE");
             s.times = read_.numbers(sm.input, 1, what + " input");
-            s.values = read_.numbers(sm.output, s.components, what + " output");
+            // Weights come as scalars, one per target a key.
+            s.values = read_.numbers(sm.output, channel.property == NodeProperty::weights ? 1 : s.components,
+                                     what + " output");
             const size_t groups = s.interpolation == Interpolation3::cubic_spline ? 3 : 1;
             if (s.values.size() != groups * s.times.size() * size_t(s.components))
                 fail(what + ": " + std::to_string(s.values.size() / size_t(s.components)) + " output values for " +
@@ -432,7 +490,6 @@ private:
     std::map<std::pair<int, int>, int> meshes_;
     int default_material_ = 0;
     int skipped_points_lines_ = 0;
-    bool morphs_ = false;
     std::vector<std::string> warnings_;
 };
 
@@ -501,9 +558,16 @@ std::vector<NodeAnimation> add_gltf(Scene& scene, GltfFile file, const std::stri
         l.node += nodes;
         scene.spot_lights.push_back(l);
     }
+    for (Deformation d : g.deformations) {
+        d.mesh += meshes;
+        d.node += nodes;
+        for (int& j : d.skin.joints) j += nodes;
+        scene.deformations.push_back(std::move(d));
+    }
     for (NodeAnimation& a : file.animations)
         for (NodeChannel& c : a.channels) c.node += nodes;
     place_nodes(scene);
+    deform_meshes(scene);  // the pose the file stands in
     return std::move(file.animations);
 }
 

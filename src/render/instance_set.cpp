@@ -111,6 +111,15 @@ std::shared_ptr<const InstanceSet<T>> InstanceSet<T>::moved(const Scene& moved, 
     auto set = std::make_shared<InstanceSet<T>>();
     set->meshes = meshes;
     set->mesh_boxes = mesh_boxes;
+    // Morphed and skinned meshes: the same triangles moved, so the same
+    // tree with its boxes refitted (scene/deformation.h).
+    for (const Deformation& d : moved.deformations) {
+        const size_t m = size_t(d.mesh);
+        if (!set->meshes[m]) continue;
+        const Mesh& mesh = *moved.meshes[m].mesh;
+        set->meshes[m] = std::make_shared<const FlatGeometry<T>>(set->meshes[m]->refit(mesh_scene(mesh), pool));
+        set->mesh_boxes[m] = mesh_box(mesh);
+    }
     place_instances(moved, set->mesh_boxes, this, *set, pool);
     return set;
 }

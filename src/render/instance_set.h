@@ -70,7 +70,8 @@ struct InstanceSet {
     // The scene's instances; nullptr when it has none. pool: builds on it.
     static std::shared_ptr<const InstanceSet> build(const Scene& scene, ThreadPool* pool = nullptr);
     // The same meshes with the instances where `moved` places them (a
-    // movie's frame): only matrices, boxes and the top BVH are redone.
+    // movie's frame): only matrices, boxes and the top BVH are redone, and
+    // the trees of the meshes it deforms refitted.
     std::shared_ptr<const InstanceSet> moved(const Scene& moved, ThreadPool* pool = nullptr) const;
 };
 

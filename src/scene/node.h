@@ -26,6 +26,7 @@ struct SceneNode {
     glm::dquat rotation{1, 0, 0, 0};  // w, x, y, z: unit
     dvec3 scale{1};
     bool has_matrix = false;  // `matrix` instead of TRS (never animated)
+    std::vector<double> weights;  // its mesh's morph target weights (scene/deformation.h)
     glm::dmat4 matrix{1.0};
 
     glm::dmat4 local() const;

@@ -13,6 +13,7 @@
 #include "geometry/shapes.h"
 #include "geometry/triangle.h"
 #include "scene/camera.h"
+#include "scene/deformation.h"
 #include "scene/instance.h"
 #include "scene/lights.h"
 #include "scene/material.h"
@@ -61,6 +62,7 @@ struct Scene {
     std::vector<Instance> instances;  // of those meshes
     std::vector<Group> groups;
     std::vector<SceneNode> nodes;  // glTF files' nodes, parents first (scene/node.h)
+    std::vector<Deformation> deformations;  // meshes morphed or skinned (scene/deformation.h)
     int mesh_files = 0;                    // mesh files read (each once)
     size_t degenerate_mesh_triangles = 0;  // their zero-area triangles, left out
 

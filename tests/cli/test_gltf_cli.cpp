@@ -175,5 +175,69 @@ TEST(GltfCli, CameraByNameOrIndex) {
     EXPECT_FALSE(fs::exists(dir / "e.png"));
 }
 
+// Debian's simple_skin.gltf at frame 30 (1 s): joint 2 (under joint 1 at
+// (0,1,0)) has turned 90 degrees about z (its key (0, 0, 0.707, 0.707),
+// made unit). Both inverse bind matrices are T(-0.5,-1,0), so joint 1's
+// matrix is T(-0.5,0,0) and joint 2's T(0,1,0) Rz(90) T(-0.5,-1,0):
+//   vertex 1 (1,0,0), joint 1 alone:        (0.5, 0, 0)
+//   vertex 5 (1,1,0), a half each: (0.5,1,0) and T(0,1,0) Rz (0.5,0,0) = (0,1.5,0) -> (0.25,1.25,0)
+//   vertex 8 (0,2,0), joint 2: Rz (-0.5,1,0) = (-1,-0.5,0) -> (-1,0.5,0)
+//   vertex 9 (1,2,0), joint 2: Rz (0.5,1,0) = (-1,0.5,0) -> (-1,1.5,0)
+// z-up: (x, y, z) -> (x, -z, y). Export lists each triangle's corners in
+// the file's index order (0 1 3, 0 3 2, 2 3 5, ..., 6 7 9, 6 9 8): vertex 1
+// is written 2nd, 5 9th, 9 21st and 8 24th.
+TEST(GltfCli, ExportOfDebiansSkinByHand) {
+    const fs::path dir = fresh_dir("gltf_export_skin");
+    const auto v = exported("/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf --frame 30", dir);
+    ASSERT_EQ(v.size(), 24u);
+    const std::pair<size_t, dvec3> want[] = {
+        {1, {0.5, 0, 0}}, {8, {0.25, 0, 1.25}}, {20, {-1, 0, 1.5}}, {23, {-1, 0, 0.5}}};
+    for (const auto& [at, p] : want)
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(v[at][k], p[k], 1e-6) << "vertex " << at << " axis " << k;
+}
+
+// Debian's AnimatedMorphCube.gltf at frame 60 (2 s, its key 60): weights
+// (0.8055561, 0.1944439). Vertex 5 rests at (-0.01, -0.01, -0.01); the
+// targets move its y by 0.0189325 and 0.0198908: y = -0.01 + 0.8055561 x
+// 0.0189325 + 0.1944439 x 0.0198908 = 0.0091189. The node turns it 180
+// degrees about (0, 1, -1) -- (x, y, z) -> (-x, -z, -y) -- and scales it
+// 100: (1, 1, -0.91189); z-up: (1, 0.91189, 1). It is the 8th vertex
+// written (triangle 6 5 4).
+TEST(GltfCli, ExportOfDebiansMorphByHand) {
+    const fs::path dir = fresh_dir("gltf_export_morph");
+    const auto v = exported(
+        "/usr/share/assimp/models/glTF2/glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf --frame 60", dir);
+    ASSERT_EQ(v.size(), 36u);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(v[7][k], (dvec3{1, 0.91189, 1})[k], 2e-5) << "axis " << k;
+    // Its bind pose (frame 0, weights 0): (-0.01,-0.01,-0.01) -> 100 (0.01,0.01,0.01) -> z-up (1,-1,1).
+    const auto rest = exported(
+        "/usr/share/assimp/models/glTF2/glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf --frame 0", dir);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(rest[7][k], (dvec3{1, -1, 1})[k], 1e-5) << "axis " << k;
+}
+
+// A skinned movie's frames are a function of their index alone: one
+// thread, three, shards and a resumed run give the same bytes (every frame
+// deforms the mesh from its rest pose and refits the tree prepared once).
+TEST(GltfCli, SkinnedFramesAreTheSameBytesForAnyThreadsShardsAndResume) {
+    const fs::path dir = fresh_dir("gltf_skin_frames");
+    const std::string skin = "/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf --fps 6 --resolution 48x36 --quiet";
+    auto frames = [&](const std::string& out, const std::string& more) {
+        const auto r = run_firsthit("frames " + skin + " --out " + (dir / out).string() + " " + more);
+        ASSERT_EQ(r.status, 0) << r.err;
+    };
+    frames("one", "--threads 1");
+    frames("three", "--threads 3");
+    frames("shards", "--shard 0/2 --threads 2");
+    frames("shards", "--shard 1/2 --threads 1");
+    frames("resumed", "--range 10-20 --threads 2");
+    frames("resumed", "--resume --threads 2");
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir / "one"))
+        if (e.path().extension() == ".png") names.push_back(e.path().filename().string());
+    ASSERT_EQ(names.size(), 34u);  // 5.5 s at 6 fps: frames 0 .. 33
+    for (const std::string& folder : {"three", "shards", "resumed"})
+        for (const std::string& n : names) EXPECT_EQ(slurp(dir / folder / n), slurp(dir / "one" / n)) << folder << "/" << n;
+}
+
 }  // namespace
 }  // namespace fh::test

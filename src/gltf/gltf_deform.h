@@ -1,0 +1,24 @@
+// A glTF primitive's morph targets and a node's skin read into a
+// Deformation (scene/deformation.h), every bound checked: targets as many
+// vertices as the primitive, joints and inverse bind matrices one each,
+// every vertex's joints inside the skin and its weights finite, >= 0 and
+// not all zero (they are normalised to sum to 1, as the specification
+// expects them to). Only the .cpp files of src/gltf include this header.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "gltf/accessors.h"
+#include "scene/deformation.h"
+
+namespace fh {
+
+std::vector<MorphTarget> read_morph_targets(const tinygltf::Primitive& prim, const AccessorReader& read,
+                                            size_t vertices, const std::string& what);
+
+// joint_nodes: the skin's joints as scene nodes (the caller maps them).
+SkinBinding read_skin(const tinygltf::Skin& skin, const tinygltf::Primitive& prim, const AccessorReader& read,
+                      size_t vertices, std::vector<int> joint_nodes, const std::string& what);
+
+}  // namespace fh
