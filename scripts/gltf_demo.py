@@ -2,9 +2,11 @@
 """Writes firsthit's own animated glTF (make gltf-demo): a cart that drives
 across a floor on two spinning wheels (a node hierarchy, LINEAR translation
 and LINEAR rotation by slerp), a ball that bounces (CUBICSPLINE), a beacon
-that hops from post to post (STEP), a camera on a node, and a directional, a
-point and a spot light (KHR_lights_punctual). One .gltf file, its buffer in a
-data: URI; glTF is y-up.
+that hops from post to post (STEP), a tentacle that sways (a skin of three
+joints), a blob that squashes (a morph target, its weight animated), a
+camera on a node, and a directional, a point and a spot light
+(KHR_lights_punctual). One .gltf file, its buffer in a data: URI; glTF is
+y-up.
 
     python3 scripts/gltf_demo.py OUT.gltf
 """
@@ -78,6 +80,23 @@ def sphere(radius, rings=16, segments=32):
     return pos, nrm, idx
 
 
+def tube(radius, height, rings=24, segments=24):
+    """An open cylinder along +y from the origin, smooth, rings + 1 circles."""
+    pos, nrm, idx = [], [], []
+    for r in range(rings + 1):
+        y = height * r / rings
+        for s in range(segments + 1):
+            a = 2 * math.pi * s / segments
+            pos.append([radius * math.cos(a), y, radius * math.sin(a)])
+            nrm.append([math.cos(a), 0, math.sin(a)])
+    for r in range(rings):
+        for s in range(segments):
+            a = r * (segments + 1) + s
+            b = a + segments + 1
+            idx += [a, b, a + 1, a + 1, b, b + 1]
+    return pos, nrm, idx
+
+
 def quat_axis_angle(axis, angle):
     n = math.sqrt(sum(c * c for c in axis))
     s = math.sin(angle / 2)
@@ -125,13 +144,16 @@ class Builder:
         self.accessors.append(acc)
         return len(self.accessors) - 1
 
-    def mesh(self, shape, material):
+    def mesh(self, shape, material, extra=None, targets=None):
         pos, nrm, idx = shape
-        return {"primitives": [{
-            "attributes": {"POSITION": self.accessor(pos, "VEC3", target=34962),
-                           "NORMAL": self.accessor(nrm, "VEC3", target=34962)},
-            "indices": self.accessor(idx, "SCALAR", 5123, 34963),
-            "material": material}]}
+        attributes = {"POSITION": self.accessor(pos, "VEC3", target=34962),
+                      "NORMAL": self.accessor(nrm, "VEC3", target=34962)}
+        attributes.update(extra or {})
+        primitive = {"attributes": attributes, "indices": self.accessor(idx, "SCALAR", 5123, 34963),
+                     "material": material}
+        if targets:
+            primitive["targets"] = [{"POSITION": self.accessor(t, "VEC3")} for t in targets]
+        return {"primitives": [primitive]}
 
 
 def main(out):
@@ -144,6 +166,8 @@ def main(out):
         {"name": "beacon", "pbrMetallicRoughness": {"baseColorFactor": [1, 0.85, 0.2, 1], "metallicFactor": 0, "roughnessFactor": 0.5},
          "emissiveFactor": [1, 0.75, 0.1]},
         {"name": "post", "pbrMetallicRoughness": {"baseColorFactor": [0.3, 0.5, 0.3, 1], "metallicFactor": 0, "roughnessFactor": 0.7}},
+        {"name": "tentacle", "pbrMetallicRoughness": {"baseColorFactor": [0.55, 0.25, 0.75, 1], "metallicFactor": 0, "roughnessFactor": 0.35}},
+        {"name": "blob", "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.75, 0.6, 1], "metallicFactor": 0, "roughnessFactor": 0.3}},
     ]
     meshes = [b.mesh(box(14, 0.2, 8), 0), b.mesh(box(2.2, 0.8, 1.3), 1), b.mesh(wheel(0.45, 0.3), 2),
               b.mesh(sphere(0.6), 3), b.mesh(box(0.4, 0.4, 0.4), 4), b.mesh(box(0.3, 1.2, 0.3), 5)]
@@ -167,6 +191,42 @@ def main(out):
     nodes[5]["children"] = [9]  # the spot shines down from the beacon
     scene_nodes = [0, 1, 4, 5, 6, 7, 8, 10, 11, 12]
 
+    # A skin: a tube 2.4 tall standing at (5, 0, -2), its joints at heights
+    # 0, 0.8 and 1.6, each vertex weighted between the two nearest (a tent
+    # function of its height); the inverse bind matrices undo each joint's
+    # place. The tube's own node stays at the origin: a skin's joints place it.
+    base = [5, 0, -2]
+    pos, nrm, idx = tube(0.28, 2.4)
+    joints, weights = [], []
+    for p in pos:
+        h = p[1] / 0.8  # 0 .. 3 in joint spacings
+        k = min(int(h), 1)
+        f = min(h - k, 1.0)
+        joints.append([k, k + 1, 0, 0])
+        weights.append([1 - f, f, 0, 0])
+    pos = [[p[0] + base[0], p[1] + base[1], p[2] + base[2]] for p in pos]
+    extra = {"JOINTS_0": b.accessor(joints, "VEC4", 5123), "WEIGHTS_0": b.accessor(weights, "VEC4")}
+    meshes.append(b.mesh((pos, nrm, idx), 6, extra))
+    first_joint = len(nodes)
+    nodes.append({"name": "tentacle", "mesh": len(meshes) - 1, "skin": 0})
+    nodes.append({"name": "tentacle base", "translation": base, "children": [first_joint + 2]})
+    nodes.append({"name": "tentacle middle", "translation": [0, 0.8, 0], "children": [first_joint + 3]})
+    nodes.append({"name": "tentacle top", "translation": [0, 0.8, 0]})
+    scene_nodes += [first_joint, first_joint + 1]
+    binds = [[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -base[0], -base[1] - 0.8 * j, -base[2], 1] for j in range(3)]
+    skins = [{"name": "tentacle", "joints": [first_joint + 1, first_joint + 2, first_joint + 3],
+              "inverseBindMatrices": b.accessor(binds, "MAT4")}]
+
+    # A morph target: a sphere on the floor at (-5, 0.6, -2) that squashes,
+    # half as tall and 1.3 times as wide, its bottom staying put.
+    ball = sphere(0.6)
+    squash = [[0.3 * p[0], -0.5 * (p[1] + 0.6), 0.3 * p[2]] for p in ball[0]]
+    meshes.append(b.mesh(ball, 7, targets=[squash]))
+    meshes[-1]["weights"] = [0]
+    blob = len(nodes)
+    nodes.append({"name": "blob", "mesh": len(meshes) - 1, "translation": [-5, 0.6, -2]})
+    scene_nodes.append(blob)
+
     # LINEAR: the cart drives across in 4 s; its wheels turn (slerp through
     # four quarter turns a second: keys 90 degrees apart, the shorter arc).
     times = [i * 0.25 for i in range(17)]
@@ -189,19 +249,30 @@ def main(out):
     # STEP: the beacon hops post to post each second.
     hop_t = b.accessor([0, 1, 2, 3, 4], "SCALAR")
     hop = b.accessor([[-3, 1.4, -2.5], [0, 1.4, -2.5], [3, 1.4, -2.5], [0, 1.4, -2.5], [-3, 1.4, -2.5]], "VEC3")
+    # The skin: the middle and top joints lean 25 degrees one way, then the
+    # other (LINEAR, a key a second).
+    sway = b.accessor([quat_axis_angle([0, 0, 1], a) for a in (0, 0.44, 0, -0.44, 0)], "VEC4")
+    # The morph: squashed at each half second, round at each whole (LINEAR).
+    squash_t = b.accessor([i * 0.5 for i in range(9)], "SCALAR")
+    squash_w = b.accessor([i % 2 for i in range(9)], "SCALAR")
     animation = {
         "name": "drive",
         "samplers": [{"input": t_in, "output": drive, "interpolation": "LINEAR"},
                      {"input": t_in, "output": spin, "interpolation": "LINEAR"},
                      {"input": bounce_in, "output": bounce, "interpolation": "CUBICSPLINE"},
-                     {"input": hop_t, "output": hop, "interpolation": "STEP"}],
+                     {"input": hop_t, "output": hop, "interpolation": "STEP"},
+                     {"input": hop_t, "output": sway, "interpolation": "LINEAR"},
+                     {"input": squash_t, "output": squash_w, "interpolation": "LINEAR"}],
         "channels": [{"sampler": 0, "target": {"node": 1, "path": "translation"}},
                      {"sampler": 1, "target": {"node": 2, "path": "rotation"}},
                      {"sampler": 1, "target": {"node": 3, "path": "rotation"}},
                      {"sampler": 1, "target": {"node": 13, "path": "rotation"}},
                      {"sampler": 1, "target": {"node": 14, "path": "rotation"}},
                      {"sampler": 2, "target": {"node": 4, "path": "translation"}},
-                     {"sampler": 3, "target": {"node": 5, "path": "translation"}}],
+                     {"sampler": 3, "target": {"node": 5, "path": "translation"}},
+                     {"sampler": 4, "target": {"node": first_joint + 2, "path": "rotation"}},
+                     {"sampler": 4, "target": {"node": first_joint + 3, "path": "rotation"}},
+                     {"sampler": 5, "target": {"node": blob, "path": "weights"}}],
     }
     gltf = {
         "asset": {"version": "2.0", "generator": "firsthit scripts/gltf_demo.py"},
@@ -211,6 +282,7 @@ def main(out):
         "nodes": nodes,
         "meshes": meshes,
         "materials": materials,
+        "skins": skins,
         "cameras": [{"name": "front", "type": "perspective", "perspective": {"yfov": 0.75, "aspectRatio": 16 / 9, "znear": 0.1}}],
         "extensions": {"KHR_lights_punctual": {"lights": [
             {"name": "sun", "type": "directional", "color": [1, 0.95, 0.85], "intensity": 1.2},
