@@ -1,7 +1,9 @@
 // The view's background render thread: renders the latest request (a view
 // state, first coarse, then at full resolution) while the window keeps
 // answering; a newer request replaces one not yet started and ends a
-// refinement before its next pass.
+// refinement before its next pass. A movie whose scene moves -- its paths,
+// its glTF files' animations, skins and morphs -- shows each frame's scene,
+// updated from the one prepared once as `frames` does it.
 #pragma once
 
 #include <chrono>
@@ -11,6 +13,7 @@
 #include <optional>
 #include <thread>
 
+#include "anim/movie.h"
 #include "render/prepared_scene.h"
 #include "view/view_state.h"
 
@@ -37,9 +40,11 @@ struct Result {
 // replaces one not yet started and ends a refinement before its next pass.
 class Renderer {
 public:
-    Renderer(const Scene& scene, const RenderSettings& settings, int threads)
-        : settings_(settings), pool_(threads), prepared_(scene, settings, &pool_),
-          thread_([this] { loop(); }) {}
+    // movie: the movie shown, or nullptr for a scene file.
+    Renderer(const Scene& scene, const RenderSettings& settings, int threads, const Movie* movie = nullptr)
+        : settings_(settings), pool_(threads), prepared_(movie ? movie->scene : scene, settings, &pool_),
+          movie_(movie && movie->scene_changes() ? movie : nullptr),
+          moves_(movie ? movie->shape_changes() : ShapeChanges{}), thread_([this] { loop(); }) {}
 
     ~Renderer() {
         {
@@ -100,6 +105,13 @@ private:
 
     void render_passes(const Request& req) {
         const Camera full = req.state.camera();
+        std::optional<PreparedScene> frame;  // a moving scene at the frame shown
+        if (movie_ && req.state.is_movie()) {
+            if (!frame_scene_) frame_scene_.emplace(movie_->scene);
+            scene_at(*movie_, req.state.frame(), *frame_scene_);
+            frame.emplace(prepared_.for_frame(*frame_scene_, moves_, &pool_));
+        }
+        const PreparedScene& prepared = frame ? *frame : prepared_;
         int divisor = req.divisor;
         for (;;) {
             RenderSettings s = settings_;
@@ -107,7 +119,7 @@ private:
                 s.samples_per_pixel = 1;
                 s.adaptive = false;
             }
-            FrameResult fr = prepared_.render(view::reduced(full, divisor), &pool_, s);
+            FrameResult fr = prepared.render(view::reduced(full, divisor), &pool_, s);
             {
                 const std::lock_guard lock(mutex_);
                 result_ = Result{req.generation, req.state, divisor, std::move(fr.image), fr.render_ms};
@@ -125,6 +137,9 @@ private:
     RenderSettings settings_;
     ThreadPool pool_;
     const PreparedScene prepared_;  // the geometry and its BVH, once for every frame shown
+    const Movie* movie_;            // a movie whose scene moves, or nullptr
+    ShapeChanges moves_;
+    std::optional<Scene> frame_scene_;  // the render thread's: set to each frame shown
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<Request> pending_;

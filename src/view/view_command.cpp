@@ -40,7 +40,7 @@ int run_view(const Args& args) {
     else state.emplace(job.file, job.scene(), job.camera_index);
 
     const view::Glfw glfw;
-    view::Viewer viewer(*state, job.scene(), job.settings(), threads);
+    view::Viewer viewer(*state, job.scene(), job.settings(), threads, job.is_movie_file ? &job.movie : nullptr);
     return viewer.run();
 }
 

@@ -45,8 +45,10 @@ struct Glfw {
 
 class Viewer {
 public:
-    Viewer(ViewState state, const Scene& scene, const RenderSettings& settings, int threads)
-        : state_(std::move(state)), renderer_(scene, settings, threads) {}
+    // movie: the movie shown (its scene may move), or nullptr for a scene.
+    Viewer(ViewState state, const Scene& scene, const RenderSettings& settings, int threads,
+           const Movie* movie = nullptr)
+        : state_(std::move(state)), renderer_(scene, settings, threads, movie) {}
 
     int run() {
         const Camera cam = state_.camera();

@@ -16,7 +16,9 @@
 #     S (frame 11) each equal `firsthit render MOVIE --frame N`; Home, Left at
 #     frame 0 stays; Space plays (the title's frame moves) and Space pauses;
 #     P flips the projection (a different image, saved as
-#     ..._perspective-orthographic.png); Esc quits with status 0.
+#     ..._perspective-orthographic.png); Esc quits with status 0;
+#   - the glTF demo (its nodes, skin and morph animated) at frames 45, 46
+#     and 120: each saved frame equals `firsthit render DEMO --frame N`.
 # Every wait polls with a timeout; no fixed sleeps.
 #
 # Exit: 0 pass, 1 fail, 77 skipped (CTest SKIP_RETURN_CODE) only when firsthit
@@ -222,5 +224,19 @@ cmp -s view_tiny_frame0000_perspective-orthographic.png "$tmp/ref/frame0.png" &&
 [[ $(title) == *"perspective-orthographic (orthographic)"* ]] || fail "title after P: $(title)"
 log "P flips the movie camera's projection: $(title)"
 quit_with Escape
+
+# --- a glTF movie whose scene moves: nodes, a skin, a morph ---------------
+# Each frame shown is that frame's scene (the cart driven on, the tentacle
+# swayed, the blob squashed), as `render --frame N` draws it.
+demo=$src/animations/gltf/demo.gltf
+for f in 45 46 120; do "$firsthit" render "$demo" --frame "$f" --resolution 64x36 -o "$tmp/ref/demo$f.png"; done
+start_view "$demo" --frame 45 --resolution 64x36
+save_and_check view_demo_frame0045_front.png "$tmp/ref/demo45.png"
+press Right
+save_and_check view_demo_frame0046_front.png "$tmp/ref/demo46.png"
+press End
+save_and_check view_demo_frame0120_front.png "$tmp/ref/demo120.png"
+log "a glTF movie's moving scene, skin and morph shown frame by frame"
+quit_with q
 
 log "PASS"
