@@ -34,24 +34,27 @@ std::vector<MorphTarget> read_morph_targets(const tinygltf::Primitive& prim, con
     return targets;
 }
 
-SkinBinding read_skin(const tinygltf::Skin& skin, const tinygltf::Primitive& prim, const AccessorReader& read,
-                      size_t vertices, std::vector<int> joint_nodes, const std::string& what) {
-    SkinBinding s;
-    s.joints = std::move(joint_nodes);
-    if (s.joints.empty()) read.fail(what + ": its skin has no joints");
-    if (skin.inverseBindMatrices >= 0) {
-        const std::vector<double> m = read.numbers(skin.inverseBindMatrices, 16, what + " inverseBindMatrices");
-        if (m.size() != 16 * s.joints.size())
-            read.fail(what + ": " + std::to_string(m.size() / 16) + " inverse bind matrices for " +
-                      std::to_string(s.joints.size()) + " joints");
-        for (size_t j = 0; j < s.joints.size(); ++j) {
-            glm::dmat4 b;
-            for (int k = 0; k < 16; ++k) b[k / 4][k % 4] = m[16 * j + size_t(k)];  // column-major, as glTF
-            s.inverse_binds.push_back(b);
-        }
-    } else {
-        s.inverse_binds.assign(s.joints.size(), glm::dmat4(1.0));  // the specification's default
+std::vector<glm::dmat4> read_inverse_binds(const tinygltf::Skin& skin, const AccessorReader& read,
+                                           const std::string& what) {
+    const size_t joints = skin.joints.size();
+    if (joints == 0) read.fail(what + ": its skin has no joints");
+    if (skin.inverseBindMatrices < 0) return std::vector<glm::dmat4>(joints, glm::dmat4(1.0));  // the default
+    const std::vector<double> m = read.numbers(skin.inverseBindMatrices, 16, what + " inverseBindMatrices");
+    if (m.size() != 16 * joints)
+        read.fail(what + ": " + std::to_string(m.size() / 16) + " inverse bind matrices for " + std::to_string(joints) +
+                  " joints");
+    std::vector<glm::dmat4> out;
+    for (size_t j = 0; j < joints; ++j) {
+        glm::dmat4 b;
+        for (int k = 0; k < 16; ++k) b[k / 4][k % 4] = m[16 * j + size_t(k)];  // column-major, as glTF
+        out.push_back(b);
     }
+    return out;
+}
+
+SkinWeights read_skin_weights(const tinygltf::Primitive& prim, const AccessorReader& read, size_t vertices,
+                              size_t skin_joints, const std::string& what) {
+    SkinWeights s;
     // JOINTS_0/WEIGHTS_0, JOINTS_1/WEIGHTS_1, ...: four influences a set.
     std::vector<std::vector<double>> joints, weights;
     for (int set = 0;; ++set) {
@@ -76,9 +79,9 @@ SkinBinding read_skin(const tinygltf::Skin& skin, const tinygltf::Primitive& pri
         for (size_t i = 0; i < k; ++i) {
             const double joint = joints[i / 4][4 * v + i % 4], weight = weights[i / 4][4 * v + i % 4];
             if (!(weight >= 0)) read.fail(what + ": vertex " + std::to_string(v) + " has a negative weight");
-            if (weight > 0 && !(joint >= 0 && joint < double(s.joints.size())))
+            if (weight > 0 && !(joint >= 0 && joint < double(skin_joints)))
                 read.fail(what + ": vertex " + std::to_string(v) + " names joint " + std::to_string(std::int64_t(joint)) +
-                          " of a skin of " + std::to_string(s.joints.size()));
+                          " of a skin of " + std::to_string(skin_joints));
             s.joint[v * k + i] = weight > 0 ? std::uint32_t(joint) : 0;
             s.weight[v * k + i] = weight;
             sum += weight;

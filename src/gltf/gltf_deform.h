@@ -17,8 +17,12 @@ namespace fh {
 std::vector<MorphTarget> read_morph_targets(const tinygltf::Primitive& prim, const AccessorReader& read,
                                             size_t vertices, const std::string& what);
 
-// joint_nodes: the skin's joints as scene nodes (the caller maps them).
-SkinBinding read_skin(const tinygltf::Skin& skin, const tinygltf::Primitive& prim, const AccessorReader& read,
-                      size_t vertices, std::vector<int> joint_nodes, const std::string& what);
+// The skin's inverse bind matrices, one per joint (identity when left out).
+std::vector<glm::dmat4> read_inverse_binds(const tinygltf::Skin& skin, const AccessorReader& read,
+                                           const std::string& what);
+
+// Every JOINTS_n/WEIGHTS_n set of a primitive skinned by a skin of `joints` joints.
+SkinWeights read_skin_weights(const tinygltf::Primitive& prim, const AccessorReader& read, size_t vertices,
+                              size_t joints, const std::string& what);
 
 }  // namespace fh

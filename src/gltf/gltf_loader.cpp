@@ -4,6 +4,9 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <map>
+#include <memory>
+#include <tuple>
 #include <numbers>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -264,17 +267,31 @@ private:
         d.node = at;
         d.mesh = int(s.meshes.size());
         const size_t vertices = d.rest->positions.size();
-        d.targets = read_morph_targets(prim, read_, vertices, what);
+        // Each node deforms its own copy: bounded, as a file of many nodes
+        // sharing one big morphed mesh would otherwise copy it for each.
+        deformed_vertices_ += vertices;
+        if (deformed_vertices_ > kMaxGltfDeformedVertices)
+            fail(what + ": morphed and skinned copies of more than " + std::to_string(kMaxGltfDeformedVertices) +
+                 " vertices in all (the limit)");
+        // Read once per primitive (and skin), shared by every node using it.
+        auto& targets = targets_[{m, p}];
+        if (!targets && !prim.targets.empty())
+            targets = std::make_shared<const std::vector<MorphTarget>>(read_morph_targets(prim, read_, vertices, what));
+        d.targets = targets;
         if (node.skin >= 0) {
             if (size_t(node.skin) >= m_.skins.size()) fail(what + ": skin " + std::to_string(node.skin) + " does not exist");
             const tinygltf::Skin& skin = m_.skins[size_t(node.skin)];
-            std::vector<int> joints;
             for (const int j : skin.joints) {
                 if (j < 0 || size_t(j) >= m_.nodes.size()) fail(what + ": joint node " + std::to_string(j) + " does not exist");
                 if (new_index_[size_t(j)] < 0) fail(what + ": joint node " + std::to_string(j) + " is not in the scene shown");
-                joints.push_back(new_index_[size_t(j)]);
+                d.skin.joints.push_back(new_index_[size_t(j)]);
             }
-            d.skin = read_skin(skin, prim, read_, vertices, std::move(joints), what);
+            d.skin.inverse_binds = read_inverse_binds(skin, read_, what);
+            auto& weights = skin_weights_[{m, p, node.skin}];
+            if (!weights)
+                weights = std::make_shared<const SkinWeights>(
+                    read_skin_weights(prim, read_, vertices, skin.joints.size(), what));
+            d.skin.weights = weights;
         }
         s.meshes.push_back({s.meshes[size_t(shared)].name + " on " + s.nodes[size_t(at)].name, d.rest});
         s.deformations.push_back(std::move(d));
@@ -490,6 +507,9 @@ private:
     std::map<std::pair<int, int>, int> meshes_;
     int default_material_ = 0;
     int skipped_points_lines_ = 0;
+    size_t deformed_vertices_ = 0;
+    std::map<std::pair<int, int>, std::shared_ptr<const std::vector<MorphTarget>>> targets_;
+    std::map<std::tuple<int, int, int>, std::shared_ptr<const SkinWeights>> skin_weights_;
     std::vector<std::string> warnings_;
 };
 

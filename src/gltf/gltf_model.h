@@ -23,6 +23,9 @@ inline constexpr std::size_t kMaxGltfBufferBytes = std::size_t(1) << 30;  // all
 inline constexpr std::size_t kMaxGltfNodes = 1'000'000;
 // Numbers one accessor may hold (components x count: 2^26, 512 MiB read as doubles).
 inline constexpr std::size_t kMaxGltfAccessorValues = std::size_t(1) << 26;
+// Vertices of all the morphed and skinned copies (each node deforms its own;
+// 2^22: about 250 MB of copies at most).
+inline constexpr std::size_t kMaxGltfDeformedVertices = std::size_t(1) << 22;
 
 // The extensions firsthit implements; a file that requires any other is
 // refused, naming it.

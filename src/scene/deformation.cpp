@@ -21,16 +21,17 @@ glm::dmat3 normal_matrix(const glm::dmat4& m) {
 
 Mesh deformed(const Deformation& d, const std::vector<double>& weights, const std::vector<glm::dmat4>& joint_matrices) {
     Mesh m = *d.rest;
-    for (size_t t = 0; t < d.targets.size() && t < weights.size(); ++t) {
+    const size_t targets = d.targets ? d.targets->size() : 0;
+    for (size_t t = 0; t < targets && t < weights.size(); ++t) {
         const double w = weights[t];
         if (w == 0) continue;
-        const MorphTarget& target = d.targets[t];
+        const MorphTarget& target = (*d.targets)[t];
         for (size_t v = 0; v < m.positions.size(); ++v) m.positions[v] += w * target.positions[v];
         if (!target.normals.empty() && !m.normals.empty())
             for (size_t v = 0; v < m.normals.size(); ++v) m.normals[v] += w * target.normals[v];
     }
-    const SkinBinding& s = d.skin;
-    if (s.influences > 0) {
+    if (d.skin.weights) {
+        const SkinWeights& s = *d.skin.weights;
         const size_t k = size_t(s.influences);
         for (size_t v = 0; v < m.positions.size(); ++v) {
             glm::dmat4 blend(0.0);
@@ -49,7 +50,7 @@ void deform_meshes(Scene& scene) {
     std::vector<glm::dmat4> joints;
     for (const Deformation& d : scene.deformations) {
         joints.clear();
-        if (d.skin.influences > 0) {
+        if (d.skin.weights) {
             const glm::dmat4& n = world[size_t(d.node)];
             // A node scaled to nothing shows nothing: its mesh collapses
             // (and its triangles, degenerate, are left out).

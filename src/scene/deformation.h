@@ -29,21 +29,28 @@ struct MorphTarget {
     std::vector<dvec3> normals;    // one per vertex, or empty
 };
 
-// Linear blend skinning: each vertex moved by up to `influences` joints.
-struct SkinBinding {
-    std::vector<int> joints;                // scene nodes
-    std::vector<glm::dmat4> inverse_binds;  // one per joint
-    int influences = 0;                     // joints per vertex (0: no skin)
-    std::vector<std::uint32_t> joint;       // vertices x influences, into `joints`
-    std::vector<double> weight;             // vertices x influences, each vertex's summing to 1
+// Linear blend skinning's per-vertex part: each vertex moved by up to
+// `influences` of its skin's joints.
+struct SkinWeights {
+    int influences = 0;                // joints per vertex
+    std::vector<std::uint32_t> joint;  // vertices x influences, into the skin's joints
+    std::vector<double> weight;        // vertices x influences, each vertex's summing to 1
 };
 
+struct Skin {
+    std::vector<int> joints;                // scene nodes
+    std::vector<glm::dmat4> inverse_binds;  // one per joint
+    std::shared_ptr<const SkinWeights> weights;  // null: no skin
+};
+
+// What the nodes using one primitive share -- its rest pose, targets and
+// weights -- is shared, not copied: each node only adds its deformed copy.
 struct Deformation {
     int mesh = 0;  // into Scene::meshes: receives the deformed copy
     int node = 0;  // the node it hangs on: its `weights` morph it; its space holds the skinned result
     std::shared_ptr<const Mesh> rest;
-    std::vector<MorphTarget> targets;
-    SkinBinding skin;
+    std::shared_ptr<const std::vector<MorphTarget>> targets;  // null: none
+    Skin skin;
 };
 
 // The rest mesh morphed by `weights` (one per target; missing ones 0) and

@@ -169,5 +169,22 @@ TEST(GltfMorph, BadTargetsAreOneLine) {
                        "node 1: 1 morph weights for 2 targets");
 }
 
+// Every node deforms its own copy of a morphed mesh: 1,500,000 vertices
+// (zeros: sparse accessors without a buffer view) on three nodes is
+// 4,500,000 vertices of copies, past the limit of 2^22 = 4,194,304. The
+// third node is refused before its copy is made; its target is read once.
+TEST(GltfMorph, CopiesPastTheLimitAreRefused) {
+    Bin bin;
+    const int where = bin.u8({0}), value = bin.f32({0, 0, 1});
+    const std::string zeros = R"({"componentType": 5126, "count": 1500000, "type": "VEC3")" +
+                              sparse(1, where, kUnsignedByte, value) + "}";
+    const std::string file = gltf_json(R"("scenes": [{"nodes": [0, 1, 2]}], "nodes": [{"mesh": 0}, {"mesh": 0}, {"mesh": 0}],
+"meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "targets": [{"POSITION": 1}]}]}],
+"accessors": [)" + zeros + ", " + zeros + "]",
+                                       bin);
+    expect_input_error([&] { load_gltf_from_memory(file, "big.gltf", "/nonexistent-folder"); }, "big.gltf",
+                       "mesh 0 primitive 0 on node 2: morphed and skinned copies of more than 4194304 vertices in all");
+}
+
 }  // namespace
 }  // namespace fh
