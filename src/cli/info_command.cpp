@@ -62,7 +62,9 @@ int run_info(const Args& args) {
                   << "nodes: " << g.scene.nodes.size() << "\n"
                   << "animations:";
         for (const NodeAnimation& a : g.animations) std::cout << " '" << a.name << "'";
-        std::cout << "\n";
+        size_t skinned = 0, morphed = 0;  // meshes a node deforms (scene/deformation.h)
+        for (const Deformation& d : m.scene.deformations) skinned += d.skin.weights != nullptr, morphed += d.targets != nullptr;
+        std::cout << "\nskinned_meshes: " << skinned << "\nmorphed_meshes: " << morphed << "\n";
         print_scene(m.scene, m.settings);
         return 0;
     }

@@ -194,6 +194,8 @@ TEST(GltfCli, ExportOfDebiansSkinByHand) {
         {1, {0.5, 0, 0}}, {8, {0.25, 0, 1.25}}, {20, {-1, 0, 1.5}}, {23, {-1, 0, 0.5}}};
     for (const auto& [at, p] : want)
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(v[at][k], p[k], 1e-6) << "vertex " << at << " axis " << k;
+    const auto info = run_firsthit("info /usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf");
+    EXPECT_NE(info.out.find("\nskinned_meshes: 1\nmorphed_meshes: 0\n"), std::string::npos) << info.out;
 }
 
 // Debian's AnimatedMorphCube.gltf at frame 60 (2 s, its key 60): weights
