@@ -167,7 +167,7 @@ std::vector<std::string> unit_warnings(const Scene& scene, const std::string& fi
         out.push_back(at + "every colour is at most 1: 0-1 colours? firsthit's colours are 0-255, so the image "
                            "comes out nearly black");
     for (const auto& l : scene.spot_lights)
-        if (l.max_angle > kTwoPi)
+        if (l.max_angle > kTwoPi && std::isfinite(l.max_angle))  // infinite: a point light (glTF)
             out.push_back(at + "spot light '" + l.name + "': max_angle " + short_number(l.max_angle) +
                           " is over 2 pi: degrees? max_angle is in radians");
     for (const Camera& c : scene.cameras) {

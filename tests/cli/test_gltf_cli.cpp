@@ -98,6 +98,29 @@ TEST(GltfCli, ExportOfAYamlSceneHoldingTheFile) {
     expect_near(exported((dir / "scene.yaml").string(), dir), {{12, -6, 4}, {14, -6, 4}, {12, -6, 6}});
 }
 
+// The glTF demo placed in a YAML scene and moved by a movie: its group by a
+// surface path, its blob by a node path; no warning (its point light is a
+// spot light without a cone, not a max_angle in degrees).
+TEST(GltfCli, TheDemoInAYamlSceneAndMovie) {
+    const fs::path dir = fresh_dir("gltf_demo_yaml");
+    std::ofstream(dir / "scene.yaml")
+        << "materials:\n  grey: {color: [200, 200, 200], ambient: 0.1, diffuse: 0.9, specular: 0, phong_exponent: 1}\n"
+           "lights:\n  ambient: {type: ambient, color: [255, 255, 255], intensity: 0.2}\n"
+           "cameras:\n  front: {type: perspective, width: 32, height: 18, view_point: [0, -20, 8],"
+           " look_at: [0, 20, -8], up: [0, 0, 1], projection_distance: 10}\n"
+           "surfaces:\n  - {type: gltf, name: demo, file: " << source_path("animations/gltf/demo.gltf") << "}\n";
+    std::ofstream(dir / "movie.yaml")
+        << "scene: scene.yaml\nfps: 10\nseconds: 2\nanimate:\n"
+           "  surfaces.demo.transform.translate: {keyframes: [{frame: 0, value: [0, 0, 0]}, {frame: 20, value: [0, 0, 3]}]}\n"
+           "  nodes.blob.scale: 2\n";
+    for (const std::string file : {"scene.yaml", "movie.yaml"}) {
+        const auto r = run_firsthit("render " + (dir / file).string() + " -o " + (dir / "out.png").string());
+        EXPECT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(r.err.rfind("wrote ", 0), 0u) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+}
+
 // A movie on the file at 10 fps: frame 5 is 0.5 s, where the file's own
 // animation has base at (0,1.5,0). A path moves node "arm" from (1,2,3) to
 // (1,2,5) over frames 0..10, so it is at (1,2,4):
