@@ -1,5 +1,7 @@
 #include "scene/node.h"
 
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/scene.h"
@@ -28,20 +30,34 @@ std::vector<glm::dmat4> node_matrices(const Scene& scene) {
 void place_nodes(Scene& scene) {
     if (scene.nodes.empty()) return;
     const std::vector<glm::dmat4> world = node_matrices(scene);
-    for (Instance& i : scene.instances)
-        if (i.node >= 0) i.to_world = world[size_t(i.node)] * i.in_node;
+    // A product of finite animated values can still overflow (a scale of
+    // 1e200 under another): such an instance shows nothing, as a scale of
+    // 0, and such a camera or light stays where it last was.
+    auto finite = [](const glm::dmat4& m) {
+        for (int k = 0; k < 16; ++k)
+            if (!std::isfinite(m[k / 4][k % 4])) return false;
+        return true;
+    };
+    glm::dmat4 nothing(0.0);
+    nothing[3][3] = 1;
+    for (Instance& i : scene.instances) {
+        if (i.node < 0) continue;
+        const glm::dmat4 m = world[size_t(i.node)] * i.in_node;
+        i.to_world = finite(m) ? m : nothing;
+    }
     auto origin = [&](int n) { return dvec3(world[size_t(n)][3]); };
     auto axis = [&](int n, const dvec3& a) { return dvec3(glm::dmat3(world[size_t(n)]) * a); };
+    auto placed = [&](int n) { return n >= 0 && finite(world[size_t(n)]); };
     for (Camera& c : scene.cameras) {
-        if (c.node < 0) continue;
+        if (!placed(c.node)) continue;
         c.view_point = origin(c.node);
         c.look_at = axis(c.node, {0, 0, -1});
         c.up = axis(c.node, {0, 1, 0});
     }
     for (auto& l : scene.directional_lights)
-        if (l.node >= 0) l.direction = unit_or_zero(axis(l.node, {0, 0, -1}));
+        if (placed(l.node)) l.direction = unit_or_zero(axis(l.node, {0, 0, -1}));
     for (auto& l : scene.spot_lights) {
-        if (l.node < 0) continue;
+        if (!placed(l.node)) continue;
         l.position = origin(l.node);
         l.axis = unit_or_zero(axis(l.node, {0, 0, -1}));
     }

@@ -317,5 +317,31 @@ TEST(GltfAnimation, AnAnimatedCameraAndLightMoveWithTheirNodes) {
     expect_vec(s.directional_lights[0].direction, {-h, h, 0}, 1e-7);
 }
 
+// Ten nested nodes each animated to a scale of 1e38 hold the triangle: the
+// product, 1e380, is past a double. Each value is finite, so the file
+// loads; at 1 s the instance shows nothing (as a scale of 0), never
+// infinities, and at 0 s it is where the file puts it.
+TEST(GltfAnimation, ScalesMultiplyingPastADoubleShowNothing) {
+    Bin bin;
+    const int t = bin.f32({0, 1}), v = bin.f32({1, 1, 1, 1e38f, 1e38f, 1e38f});
+    const std::string more = ", " + joined({accessor(t, kFloat, 2, "SCALAR"), accessor(v, kFloat, 2, "VEC3")});
+    std::string nodes, channels;
+    for (int i = 0; i < 10; ++i) {
+        nodes += "{\"children\": [" + std::to_string(i + 1) + "]}, ";
+        channels += (i ? ", " : "") + channel(0, i, "scale");
+    }
+    GltfFile f = load(gltf_json(triangle_mesh(bin, more) + R"(, "scenes": [{"nodes": [0]}], "nodes": [)" + nodes +
+                                    R"({"mesh": 0}], )" + animation(channels, sampler(1, 2, "LINEAR")),
+                                bin));
+    ASSERT_EQ(f.scene.instances.size(), 1u);
+    apply_channels(f.animations[0].channels, 1, f.scene);
+    place_nodes(f.scene);
+    const glm::dmat4& m = f.scene.instances[0].to_world;
+    for (int k = 0; k < 16; ++k) EXPECT_EQ(m[k / 4][k % 4], k == 15 ? 1.0 : 0.0) << "element " << k;
+    apply_channels(f.animations[0].channels, 0, f.scene);
+    place_nodes(f.scene);
+    expect_matrix(f.scene.instances[0].to_world, {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}});
+}
+
 }  // namespace
 }  // namespace fh
