@@ -8,9 +8,9 @@ cd "$here/build"
 ctest --output-on-failure -j "$(nproc)"
 # ThreadSanitizer over the threaded tests and, built for AVX2, the tracer's
 # tests at that width; then the loaders' fuzzers
-# for 20 s each (each builds in its own folder: build-tsan, build-fuzz).
+# for 15 s each (each builds in its own folder: build-tsan, build-fuzz).
 bash "$here/scripts/test_tsan.sh"
-bash "$here/scripts/fuzz.sh" 20
+bash "$here/scripts/fuzz.sh" 15
 # Every test once more under AddressSanitizer and
 # UndefinedBehaviorSanitizer (builds in build-asan).
 bash "$here/scripts/test_sanitizers.sh"
