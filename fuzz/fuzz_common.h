@@ -1,11 +1,14 @@
-// What both fuzzers check besides "no crash, no leak, no hang": a loader
+// What every fuzzer checks besides "no crash, no leak, no hang": a loader
 // either returns or throws fh::InputError, whose message is one line; and an
 // accepted scene renders (at 4 x 4 pixels, to stay fast) without crashing.
 #pragma once
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "text/input_error.h"
@@ -28,6 +31,21 @@ inline void check_message(const InputError& e) {
         std::fprintf(stderr, "error message of %zu bytes\n", line.size());
         std::abort();
     }
+}
+
+// A folder of this fuzzer's own under the system's temporary folder
+// ("firsthit_NAME_PID"), removed when the fuzzer exits normally.
+inline std::filesystem::path private_folder(const std::string& name) {
+    namespace fs = std::filesystem;
+    static const struct Folder {
+        fs::path dir;
+        ~Folder() {
+            std::error_code ec;
+            fs::remove_all(dir, ec);
+        }
+    } folder{fs::temp_directory_path() / ("firsthit_" + name + "_" + std::to_string(::getpid()))};
+    fs::create_directories(folder.dir);
+    return folder.dir;
 }
 
 // Renders the camera at 4 x 4 with at most 2 samples and depth 3: every

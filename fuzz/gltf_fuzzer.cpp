@@ -3,8 +3,6 @@
 // uri but data: finds nothing (scripts/fuzz.sh). An accepted file is placed
 // as `firsthit render MODEL.glb` places it -- default camera and lights --
 // its animations evaluated at their first and last frames, and rendered tiny.
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -23,17 +21,7 @@ std::string g_folder;
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("firsthit_gltf_fuzzer_" + std::to_string(getpid()));
-    fs::create_directories(dir);
-    g_folder = dir.string();
-    static const struct Cleanup {
-        fs::path dir;
-        ~Cleanup() {
-            std::error_code ec;
-            fs::remove_all(dir, ec);
-        }
-    } cleanup{dir};
+    g_folder = fh::fuzz::private_folder("gltf_fuzzer").string();
     return 0;
 }
 
@@ -41,14 +29,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string bytes(reinterpret_cast<const char*>(data), size);
     fh::Movie movie;
     try {
-        fh::GltfFile file = fh::load_gltf_from_memory(bytes, g_folder + "/fuzz.gltf", g_folder);
-        const bool has_lights = !file.scene.directional_lights.empty() || !file.scene.spot_lights.empty();
-        const std::vector<fh::NodeAnimation> animations =
-            fh::add_gltf(movie.scene, std::move(file), "model", fh::Transform{});
-        if (movie.scene.cameras.empty()) fh::add_default_camera(movie.scene);
-        fh::add_default_lights(movie.scene, movie.scene.cameras.front(), 1, !has_lights);
+        fh::GltfScene g = fh::gltf_scene(fh::load_gltf_from_memory(bytes, g_folder + "/fuzz.gltf", g_folder));
+        movie.scene = std::move(g.scene);
         movie.camera = movie.scene.cameras.front();
-        movie.node_channels = fh::chosen_channels(animations, "all", "fuzz.gltf");
+        movie.node_channels = fh::chosen_channels(g.animations, "all", "fuzz.gltf");
     } catch (const fh::InputError& e) {
         fh::fuzz::check_message(e);
         return 0;

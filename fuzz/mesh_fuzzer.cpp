@@ -4,8 +4,6 @@
 // loader reads files: assimp and our header checks both open it). An accepted
 // mesh must hold what load_mesh promises: finite vertices, indices in range,
 // triangles of non-zero corners, normals one a vertex or none.
-#include <unistd.h>
-
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -30,16 +28,7 @@ std::filesystem::path g_folder;
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    namespace fs = std::filesystem;
-    g_folder = fs::temp_directory_path() / ("firsthit_mesh_fuzzer_" + std::to_string(getpid()));
-    fs::create_directories(g_folder);
-    static const struct Cleanup {
-        fs::path dir;
-        ~Cleanup() {
-            std::error_code ec;
-            fs::remove_all(dir, ec);
-        }
-    } cleanup{g_folder};
+    g_folder = fh::fuzz::private_folder("mesh_fuzzer");
     return 0;
 }
 

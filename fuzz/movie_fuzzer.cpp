@@ -1,8 +1,6 @@
 // libFuzzer target: the movie loader on arbitrary bytes (scripts/fuzz.sh).
 // The input is the movie file; it names its scene relative to a temporary
 // folder holding a fixed, valid scene.yaml (two cameras, three lights).
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -42,19 +40,9 @@ cameras:
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / ("firsthit_movie_fuzzer_" + std::to_string(getpid()));
-    fs::create_directories(dir);
+    const std::filesystem::path dir = fh::fuzz::private_folder("movie_fuzzer");
     std::ofstream(dir / "scene.yaml") << kScene;
     g_movie_path = (dir / "movie.yaml").string();
-    // The folder is removed when the fuzzer exits normally.
-    static const struct Cleanup {
-        fs::path dir;
-        ~Cleanup() {
-            std::error_code ec;
-            fs::remove_all(dir, ec);
-        }
-    } cleanup{dir};
     return 0;
 }
 

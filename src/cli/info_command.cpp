@@ -43,25 +43,33 @@ void print_scene(const Scene& s, const RenderSettings& settings) {
               << "max_depth: " << settings.max_depth << "\n"
               << "effects: " << settings.effects.names() << "\n";
 }
+
+
+// The lines a movie and a glTF file share.
+void print_movie(const std::string& kind, const Movie& m) {
+    std::cout << "kind: " << kind << "\n"
+              << "frames: " << m.frame_count() << "\n"
+              << "fps: " << m.fps << "\n"
+              << "seconds: " << m.seconds << "\n"
+              << "camera: " << m.camera.name << "\n"
+              << "width: " << m.camera.width << "\n"
+              << "height: " << m.camera.height << "\n"
+              << "first_frame_file: " << FrameFiles{}.name(0, m.frame_count()) << "\n";
+}
 }  // namespace
 
 int run_info(const Args& args) {
     if (args.positional().size() != 1) throw UsageError("expected one FILE");
     const std::string file = args.positional()[0];
     if (is_gltf_file(file)) {
-        const GltfFile g = load_gltf(file);
-        const Movie m = load_gltf_movie({file, std::nullopt, std::nullopt, 30, 1});
-        std::cout << "kind: gltf\n"
-                  << "frames: " << m.frame_count() << "\n"
-                  << "fps: " << m.fps << "\n"
-                  << "seconds: " << m.seconds << "\n"
-                  << "camera: " << m.camera.name << "\n"
-                  << "width: " << m.camera.width << "\n"
-                  << "height: " << m.camera.height << "\n"
-                  << "first_frame_file: " << FrameFiles{}.name(0, m.frame_count()) << "\n"
-                  << "nodes: " << g.scene.nodes.size() << "\n"
+        GltfScene g = gltf_scene(file);
+        std::vector<std::string> animations;
+        for (const NodeAnimation& a : g.animations) animations.push_back(a.name);
+        const Movie m = gltf_movie(std::move(g), {file, std::nullopt, std::nullopt, 30, 1});
+        print_movie("gltf", m);
+        std::cout << "nodes: " << m.scene.nodes.size() << "\n"
                   << "animations:";
-        for (const NodeAnimation& a : g.animations) std::cout << " '" << a.name << "'";
+        for (const std::string& a : animations) std::cout << " '" << a << "'";
         size_t skinned = 0, morphed = 0;  // meshes a node deforms (scene/deformation.h)
         for (const Deformation& d : m.scene.deformations) skinned += d.skin.weights != nullptr, morphed += d.targets != nullptr;
         std::cout << "\nskinned_meshes: " << skinned << "\nmorphed_meshes: " << morphed << "\n";
@@ -70,14 +78,7 @@ int run_info(const Args& args) {
     }
     if (is_movie_file(file)) {
         const Movie m = load_movie(file);
-        std::cout << "kind: movie\n"
-                  << "frames: " << m.frame_count() << "\n"
-                  << "fps: " << m.fps << "\n"
-                  << "seconds: " << m.seconds << "\n"
-                  << "camera: " << m.camera.name << "\n"
-                  << "width: " << m.camera.width << "\n"
-                  << "height: " << m.camera.height << "\n"
-                  << "first_frame_file: " << FrameFiles{}.name(0, m.frame_count()) << "\n";
+        print_movie("movie", m);
         print_scene(m.scene, m.settings);
     } else {
         const SceneFile scene = load_scene(file);  // before printing: an error prints nothing else

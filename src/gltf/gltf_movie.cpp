@@ -45,8 +45,9 @@ std::vector<NodeChannel> chosen_channels(const std::vector<NodeAnimation>& anima
     return animations[size_t(pick(animations, which, "animation", file))].channels;
 }
 
-GltfScene gltf_scene(const std::string& path, double exposure) {
-    GltfFile file = load_gltf(path, exposure);
+GltfScene gltf_scene(const std::string& path, double exposure) { return gltf_scene(load_gltf(path, exposure), exposure); }
+
+GltfScene gltf_scene(GltfFile file, double exposure) {
     GltfScene out;
     out.warnings = std::move(file.warnings);
     const bool has_lights = !file.scene.directional_lights.empty() || !file.scene.spot_lights.empty();
@@ -57,7 +58,10 @@ GltfScene gltf_scene(const std::string& path, double exposure) {
 }
 
 Movie load_gltf_movie(const GltfMovieRequest& request) {
-    GltfScene g = gltf_scene(request.file, request.exposure);
+    return gltf_movie(gltf_scene(request.file, request.exposure), request);
+}
+
+Movie gltf_movie(GltfScene g, const GltfMovieRequest& request) {
     Movie movie;
     movie.scene = std::move(g.scene);
     movie.warnings = std::move(g.warnings);

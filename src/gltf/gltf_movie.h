@@ -9,6 +9,7 @@
 #include <string>
 
 #include "anim/movie.h"
+#include "gltf/gltf_loader.h"
 
 namespace fh {
 
@@ -29,10 +30,15 @@ struct GltfScene {
     std::vector<std::string> warnings;
 };
 GltfScene gltf_scene(const std::string& path, double exposure = 1);
+// The same for a file already read (with that exposure).
+GltfScene gltf_scene(GltfFile file, double exposure = 1);
 
 // UsageError for a camera or animation the file does not have (with the
 // closest name); InputError for a bad file.
 Movie load_gltf_movie(const GltfMovieRequest& request);
+// The same for a scene already made of the file (request.file names it; its
+// exposure is the scene's).
+Movie gltf_movie(GltfScene scene, const GltfMovieRequest& request);
 
 // The channels of the animations `which` names among `animations` ("all",
 // a name or an index); UsageError naming the file otherwise.
