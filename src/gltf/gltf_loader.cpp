@@ -81,9 +81,8 @@ public:
         // (a scale of 1e200 under another is infinite).
         const std::vector<glm::dmat4> world = node_matrices(s);
         for (size_t n = 0; n < world.size(); ++n)
-            for (int k = 0; k < 16; ++k)
-                if (!std::isfinite(world[n][k / 4][k % 4]))
-                    fail(s.nodes[n].name + ": its transform times its parents' is not finite (past a double's range)");
+            if (!is_finite(world[n]))
+                fail(s.nodes[n].name + ": its transform times its parents' is not finite (past a double's range)");
         for (size_t a = 0; a < m_.animations.size(); ++a) add_animation(int(a), out);
         if (skipped_points_lines_ > 0)
             warn(std::to_string(skipped_points_lines_) + " primitive(s) of points or lines skipped (triangles only)");
@@ -566,18 +565,16 @@ std::vector<NodeAnimation> add_gltf(Scene& scene, GltfFile file, const std::stri
         i.node += nodes;
         scene.instances.push_back(i);
     }
-    for (Camera c : g.cameras) {
-        c.node += nodes;
-        scene.cameras.push_back(c);
-    }
-    for (auto l : g.directional_lights) {
-        l.node += nodes;
-        scene.directional_lights.push_back(l);
-    }
-    for (auto l : g.spot_lights) {
-        l.node += nodes;
-        scene.spot_lights.push_back(l);
-    }
+    // What hangs on a node, its node renumbered.
+    auto add_on_nodes = [&](const auto& from, auto& to) {
+        for (auto x : from) {
+            x.node += nodes;
+            to.push_back(x);
+        }
+    };
+    add_on_nodes(g.cameras, scene.cameras);
+    add_on_nodes(g.directional_lights, scene.directional_lights);
+    add_on_nodes(g.spot_lights, scene.spot_lights);
     for (Deformation d : g.deformations) {
         d.mesh += meshes;
         d.node += nodes;

@@ -48,6 +48,9 @@ struct Group {
 // parent always comes first): world[g] = world[parent] * transform.
 std::vector<glm::dmat4> group_matrices(const std::vector<Group>& groups);
 
+// Every element of `m` is finite.
+bool is_finite(const glm::dmat4& m);
+
 // Why `m` cannot place anything -- not finite, or singular (no inverse in
 // double) -- or empty when it can.
 std::string unusable_transform(const glm::dmat4& m);

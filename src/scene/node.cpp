@@ -1,7 +1,5 @@
 #include "scene/node.h"
 
-#include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/scene.h"
@@ -33,21 +31,16 @@ void place_nodes(Scene& scene) {
     // A product of finite animated values can still overflow (a scale of
     // 1e200 under another): such an instance shows nothing, as a scale of
     // 0, and such a camera or light stays where it last was.
-    auto finite = [](const glm::dmat4& m) {
-        for (int k = 0; k < 16; ++k)
-            if (!std::isfinite(m[k / 4][k % 4])) return false;
-        return true;
-    };
     glm::dmat4 nothing(0.0);
     nothing[3][3] = 1;
     for (Instance& i : scene.instances) {
         if (i.node < 0) continue;
         const glm::dmat4 m = world[size_t(i.node)] * i.in_node;
-        i.to_world = finite(m) ? m : nothing;
+        i.to_world = is_finite(m) ? m : nothing;
     }
     auto origin = [&](int n) { return dvec3(world[size_t(n)][3]); };
     auto axis = [&](int n, const dvec3& a) { return dvec3(glm::dmat3(world[size_t(n)]) * a); };
-    auto placed = [&](int n) { return n >= 0 && finite(world[size_t(n)]); };
+    auto placed = [&](int n) { return n >= 0 && is_finite(world[size_t(n)]); };
     for (Camera& c : scene.cameras) {
         if (!placed(c.node)) continue;
         c.view_point = origin(c.node);
