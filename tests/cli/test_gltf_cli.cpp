@@ -50,6 +50,16 @@ fs::path model_dir(const std::string& name) {
     return dir;
 }
 
+// DIR/scene.yaml: a grey material, an ambient light, a 32 x 32 camera
+// (`view`: its view_point and look_at) and the one surface `surface`.
+void write_yaml_scene(const fs::path& dir, const std::string& view, const std::string& surface) {
+    std::ofstream(dir / "scene.yaml")
+        << "materials:\n  grey: {color: [200, 200, 200], ambient: 0.1, diffuse: 0.9, specular: 0, phong_exponent: 1}\n"
+           "lights:\n  ambient: {type: ambient, color: [255, 255, 255], intensity: 0.2}\n"
+           "cameras:\n  front: {type: perspective, width: 32, height: 32, "
+        << view << ", up: [0, 0, 1], projection_distance: 10}\nsurfaces:\n  - " << surface << "\n";
+}
+
 // The vertices `firsthit export ARGS -o OUT.obj` writes.
 std::vector<dvec3> exported(const std::string& args, const fs::path& dir) {
     const fs::path out = dir / "out.obj";
@@ -89,12 +99,8 @@ TEST(GltfCli, ExportIsTheWorldAfterHierarchyAndAnimation) {
 // Placed in a YAML scene, translated by (10, 0, 0) after the z-up turn.
 TEST(GltfCli, ExportOfAYamlSceneHoldingTheFile) {
     const fs::path dir = model_dir("gltf_export_yaml");
-    std::ofstream(dir / "scene.yaml")
-        << "materials:\n  grey: {color: [200, 200, 200], ambient: 0.1, diffuse: 0.9, specular: 0, phong_exponent: 1}\n"
-           "lights:\n  ambient: {type: ambient, color: [255, 255, 255], intensity: 0.2}\n"
-           "cameras:\n  front: {type: perspective, width: 32, height: 32, view_point: [0, -20, 5],"
-           " look_at: [0, 1, 0], up: [0, 0, 1], projection_distance: 10}\n"
-           "surfaces:\n  - {type: gltf, name: model, file: model.gltf, transform: {translate: [10, 0, 0]}}\n";
+    write_yaml_scene(dir, "view_point: [0, -20, 5], look_at: [0, 1, 0]",
+                     "{type: gltf, name: model, file: model.gltf, transform: {translate: [10, 0, 0]}}");
     expect_near(exported((dir / "scene.yaml").string(), dir), {{12, -6, 4}, {14, -6, 4}, {12, -6, 6}});
 }
 
@@ -103,12 +109,8 @@ TEST(GltfCli, ExportOfAYamlSceneHoldingTheFile) {
 // spot light without a cone, not a max_angle in degrees).
 TEST(GltfCli, TheDemoInAYamlSceneAndMovie) {
     const fs::path dir = fresh_dir("gltf_demo_yaml");
-    std::ofstream(dir / "scene.yaml")
-        << "materials:\n  grey: {color: [200, 200, 200], ambient: 0.1, diffuse: 0.9, specular: 0, phong_exponent: 1}\n"
-           "lights:\n  ambient: {type: ambient, color: [255, 255, 255], intensity: 0.2}\n"
-           "cameras:\n  front: {type: perspective, width: 32, height: 18, view_point: [0, -20, 8],"
-           " look_at: [0, 20, -8], up: [0, 0, 1], projection_distance: 10}\n"
-           "surfaces:\n  - {type: gltf, name: demo, file: " << source_path("animations/gltf/demo.gltf") << "}\n";
+    write_yaml_scene(dir, "view_point: [0, -20, 8], look_at: [0, 20, -8]",
+                     "{type: gltf, name: demo, file: " + source_path("animations/gltf/demo.gltf") + "}");
     std::ofstream(dir / "movie.yaml")
         << "scene: scene.yaml\nfps: 10\nseconds: 2\nanimate:\n"
            "  surfaces.demo.transform.translate: {keyframes: [{frame: 0, value: [0, 0, 0]}, {frame: 20, value: [0, 0, 3]}]}\n"
