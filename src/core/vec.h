@@ -4,6 +4,7 @@
 #pragma once
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cmath>
@@ -20,6 +21,7 @@ template <typename T>
 using Vec3 = glm::vec<3, T, glm::defaultp>;
 
 using dvec3 = Vec3<double>;
+using dvec2 = glm::vec<2, double, glm::defaultp>;  // texture coordinates
 
 // Colours are the report's 0..255 values, kept unclamped until the final pixel.
 template <typename T>

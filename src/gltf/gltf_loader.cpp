@@ -71,6 +71,7 @@ public:
         for (const tinygltf::Material& mat : m_.materials) {
             s.material_names.push_back(mat.name.empty() ? "material " + std::to_string(s.materials.size()) : mat.name);
             s.materials.push_back(material_of(mat));
+            add_surface_of(mat, s.material_names.back(), s);
         }
         default_material_ = int(s.materials.size());
         s.material_names.push_back("glTF default");
@@ -86,7 +87,10 @@ public:
         for (size_t a = 0; a < m_.animations.size(); ++a) add_animation(int(a), out);
         if (skipped_points_lines_ > 0)
             warn(std::to_string(skipped_points_lines_) + " primitive(s) of points or lines skipped (triangles only)");
-        if (!m_.textures.empty()) warn("textures are not drawn yet: materials show their base colour factor");
+        if (blended_ > 0) warn(std::to_string(blended_) + " material(s) with alphaMode BLEND drawn opaque");
+        if (unused_textures_ > 0)
+            warn(std::to_string(unused_textures_) +
+                 " normal, occlusion, emissive or metallic-roughness texture(s) not drawn (base colour textures only)");
         out.warnings.insert(out.warnings.begin(), warnings_.begin(), warnings_.end());
         return out;
     }
@@ -179,6 +183,65 @@ private:
             if (!l->IsInt()) fail(out.name + ": KHR_lights_punctual's 'light' is not an index");
             add_light(l->GetNumberAsInt(), me, s);
         }
+    }
+
+    // The base colour texture and alpha mode of material `mat` (the last
+    // of s.materials) onto it (docs/gltf.md, "Textures").
+    void add_surface_of(const tinygltf::Material& mat, const std::string& name, Scene& s) {
+        Material<double>& out = s.materials.back();
+        const auto& pbr = mat.pbrMetallicRoughness;
+        if (pbr.baseColorTexture.index >= 0) out.texture = texture_of(pbr.baseColorTexture.index, name, s);
+        for (const int t : {pbr.metallicRoughnessTexture.index, mat.normalTexture.index, mat.occlusionTexture.index,
+                            mat.emissiveTexture.index})
+            unused_textures_ += t >= 0;
+        if (mat.alphaMode == "MASK") {
+            out.cutout = true;
+            out.alpha = pbr.baseColorFactor.size() == 4 ? std::clamp(pbr.baseColorFactor[3], 0.0, 1.0) : 1.0;
+            if (!std::isfinite(mat.alphaCutoff) || mat.alphaCutoff < 0) fail(name + ": alphaCutoff must be >= 0");
+            out.alpha_cutoff = mat.alphaCutoff;
+        } else if (mat.alphaMode == "BLEND") {
+            ++blended_;
+        } else if (mat.alphaMode != "OPAQUE") {
+            fail(name + ": alphaMode '" + mat.alphaMode + "' is not OPAQUE, MASK or BLEND");
+        }
+    }
+
+    // The scene texture of glTF texture `index`: its image (decoded by
+    // gltf_model.cpp) shared with every texture that shows it, and its
+    // sampler's wrap modes and magnification filter.
+    int texture_of(int index, const std::string& name, Scene& s) {
+        if (index < 0 || size_t(index) >= m_.textures.size()) fail(name + ": texture " + std::to_string(index) + " does not exist");
+        if (const auto it = textures_.find(index); it != textures_.end()) return it->second;
+        const tinygltf::Texture& t = m_.textures[size_t(index)];
+        const std::string what = "texture " + std::to_string(index);
+        if (t.source < 0 || size_t(t.source) >= m_.images.size()) fail(what + ": it has no image firsthit can read");
+        auto& image = images_[t.source];
+        if (!image) {
+            const tinygltf::Image& in = m_.images[size_t(t.source)];
+            if (in.width <= 0 || in.height <= 0 || in.image.size() != 4 * size_t(in.width) * size_t(in.height))
+                fail("image " + std::to_string(t.source) + ": no pixels were read");
+            image = std::make_shared<const TextureImage>(TextureImage{in.width, in.height, in.image});
+        }
+        Texture out;
+        out.image = image;
+        if (t.sampler >= 0) {
+            if (size_t(t.sampler) >= m_.samplers.size()) fail(what + ": sampler " + std::to_string(t.sampler) + " does not exist");
+            const tinygltf::Sampler& sm = m_.samplers[size_t(t.sampler)];
+            auto wrap = [&](int mode) {
+                if (mode == TINYGLTF_TEXTURE_WRAP_REPEAT) return Wrap::repeat;
+                if (mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return Wrap::mirrored_repeat;
+                if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return Wrap::clamp_to_edge;
+                fail(what + ": wrap mode " + std::to_string(mode) + " is not glTF's (10497, 33648 or 33071)");
+            };
+            out.wrap_s = wrap(sm.wrapS);
+            out.wrap_t = wrap(sm.wrapT);
+            if (sm.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) out.filter = Filter::nearest;
+            else if (sm.magFilter != -1 && sm.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR)
+                fail(what + ": magFilter " + std::to_string(sm.magFilter) + " is not glTF's (9728 or 9729)");
+        }
+        s.textures.push_back(std::move(out));
+        textures_[index] = int(s.textures.size()) - 1;
+        return textures_[index];
     }
 
     // Where EXT_mesh_gpu_instancing puts copies within the node: one matrix
@@ -313,7 +376,9 @@ private:
             fail(what + ": mode " + std::to_string(prim.mode) + " is not glTF's");
         } else {
             result = int(s.meshes.size());
-            s.meshes.push_back({what, std::make_shared<Mesh>(read_primitive(prim, what))});
+            Mesh mesh = read_primitive(prim, what);
+            mesh.uvs = read_uvs(prim, what);
+            s.meshes.push_back({what, std::make_shared<Mesh>(std::move(mesh))});
         }
         meshes_[key] = result;
         return result;
@@ -349,6 +414,53 @@ private:
                               mat.emissiveTexture.index >= 0 ? mat.emissiveTexture.texCoord : -1})
             if (set >= 0 && !prim.attributes.count("TEXCOORD_" + std::to_string(set)))
                 fail(what + ": its material reads TEXCOORD_" + std::to_string(set) + ", which it does not have");
+    }
+
+    // The texture coordinates the primitive's base colour texture reads
+    // (TEXCOORD_n, n from the texture or its KHR_texture_transform), moved
+    // by that transform: uv' = translate(offset) rotate(rotation) scale(scale) uv.
+    // Empty when its material has no such texture.
+    std::vector<dvec2> read_uvs(const tinygltf::Primitive& prim, const std::string& what) const {
+        if (prim.material < 0 || size_t(prim.material) >= m_.materials.size()) return {};
+        const tinygltf::TextureInfo& info = m_.materials[size_t(prim.material)].pbrMetallicRoughness.baseColorTexture;
+        if (info.index < 0) return {};
+        int set = info.texCoord;
+        dvec2 offset(0), scale(1);
+        double rotation = 0;
+        if (const auto it = info.extensions.find("KHR_texture_transform"); it != info.extensions.end()) {
+            const tinygltf::Value& x = it->second;
+            auto pair = [&](const char* key, dvec2& into) {
+                if (!x.Has(key)) return;
+                const tinygltf::Value& v = x.Get(key);
+                if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+                    fail(what + ": KHR_texture_transform's " + key + " needs 2 numbers");
+                into = {v.Get(0).GetNumberAsDouble(), v.Get(1).GetNumberAsDouble()};
+            };
+            pair("offset", offset);
+            pair("scale", scale);
+            if (x.Has("rotation")) {
+                if (!x.Get("rotation").IsNumber()) fail(what + ": KHR_texture_transform's rotation is not a number");
+                rotation = x.Get("rotation").GetNumberAsDouble();
+            }
+            if (x.Has("texCoord")) {
+                if (!x.Get("texCoord").IsInt() || x.Get("texCoord").GetNumberAsInt() < 0)
+                    fail(what + ": KHR_texture_transform's texCoord is not a set index");
+                set = x.Get("texCoord").GetNumberAsInt();
+            }
+            if (!std::isfinite(offset.x + offset.y + scale.x + scale.y + rotation))
+                fail(what + ": KHR_texture_transform's numbers are not finite");
+        }
+        const auto attribute = prim.attributes.find("TEXCOORD_" + std::to_string(set));
+        if (attribute == prim.attributes.end())
+            fail(what + ": its material reads TEXCOORD_" + std::to_string(set) + ", which it does not have");
+        const std::vector<double> t = read_.numbers(attribute->second, 2, what + " TEXCOORD_" + std::to_string(set));
+        const double c = std::cos(rotation), sn = std::sin(rotation);
+        std::vector<dvec2> uvs(t.size() / 2);
+        for (size_t i = 0; i < uvs.size(); ++i) {
+            const double u = scale.x * t[2 * i], v = scale.y * t[2 * i + 1];
+            uvs[i] = {c * u + sn * v + offset.x, -sn * u + c * v + offset.y};
+        }
+        return uvs;
     }
 
     Mesh read_primitive(const tinygltf::Primitive& prim, const std::string& what) const {
@@ -506,6 +618,9 @@ private:
     std::map<std::pair<int, int>, int> meshes_;
     int default_material_ = 0;
     int skipped_points_lines_ = 0;
+    int blended_ = 0, unused_textures_ = 0;
+    std::map<int, int> textures_;  // glTF texture -> Scene::textures
+    std::map<int, std::shared_ptr<const TextureImage>> images_;  // glTF image, decoded
     size_t deformed_vertices_ = 0;
     std::map<std::pair<int, int>, std::shared_ptr<const std::vector<MorphTarget>>> targets_;
     std::map<std::tuple<int, int, int>, std::shared_ptr<const SkinWeights>> skin_weights_;
@@ -541,7 +656,7 @@ std::vector<NodeAnimation> add_gltf(Scene& scene, GltfFile file, const std::stri
                                     int parent) {
     Scene& g = file.scene;
     const int materials = int(scene.materials.size()), meshes = int(scene.meshes.size()),
-              nodes = int(scene.nodes.size());
+              nodes = int(scene.nodes.size()), textures = int(scene.textures.size());
     // The placement, and inside it glTF's y-up turned to firsthit's z-up.
     scene.groups.push_back({name, transform, parent});
     Transform up;
@@ -552,7 +667,9 @@ std::vector<NodeAnimation> add_gltf(Scene& scene, GltfFile file, const std::stri
     for (size_t m = 0; m < g.materials.size(); ++m) {
         scene.material_names.push_back(name + "/" + g.material_names[m]);
         scene.materials.push_back(g.materials[m]);
+        if (scene.materials.back().texture >= 0) scene.materials.back().texture += textures;
     }
+    scene.textures.insert(scene.textures.end(), g.textures.begin(), g.textures.end());
     for (SceneMesh& m : g.meshes) scene.meshes.push_back({name + "/" + m.name, std::move(m.mesh)});
     for (SceneNode n : g.nodes) {
         if (n.parent >= 0) n.parent += nodes;

@@ -1,10 +1,11 @@
-// tinygltf's implementation, compiled here once, without its image writer
-// or its own image decoding (firsthit reads no textures yet).
+// tinygltf's implementation, compiled here once, without its image writer;
+// images go through decode_image below (stb_image, from Debian's libstb).
 #define TINYGLTF_IMPLEMENTATION
 #define TINYGLTF_NO_STB_IMAGE_WRITE
 #define TINYGLTF_NO_STB_IMAGE
-#define TINYGLTF_NO_EXTERNAL_IMAGE
 #include "gltf/gltf_model.h"
+
+#include <stb/stb_image.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -24,6 +25,7 @@ const std::vector<std::string>& supported_gltf_extensions() {
         "KHR_materials_emissive_strength",
         "KHR_mesh_quantization",         // integer positions and normals
         "EXT_mesh_gpu_instancing",       // a node's rows of placements
+        "KHR_texture_transform",         // offset, rotation and scale of texture coordinates
     };
     return names;
 }
@@ -35,6 +37,7 @@ struct Folder {
     fs::path dir;
     std::string file;
     std::string problem;
+    std::size_t image_bytes = 0;  // decoded so far
 };
 
 // A uri as a message shows it: at most 60 characters (a data: uri can be
@@ -123,8 +126,39 @@ bool write_whole_file(std::string* err, const std::string&, const std::vector<un
     return false;
 }
 
-// Images are not decoded (no textures yet): accepted as they are.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// tinygltf's image callback: a PNG or JPEG (by its first bytes, whatever
+// the mimeType says) decoded to 8-bit RGBA within the limits, its size
+// read from the header before anything is allocated for it.
+bool decode_image(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+                  const unsigned char* bytes, int size, void* user) {
+    auto* folder = static_cast<Folder*>(user);
+    const std::string name = "image " + std::to_string(index) + (image->name.empty() ? "" : " ('" + image->name + "')");
+    auto refuse = [&](const std::string& why) {
+        if (folder->problem.empty()) folder->problem = name + ": " + why;
+        return false;
+    };
+    const bool png = size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0;
+    const bool jpeg = size >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff;
+    if (!png && !jpeg) return refuse("not a PNG or JPEG image");
+    int w = 0, h = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes, size, &w, &h, &channels))
+        return refuse(std::string("cannot be decoded (stb_image: ") + stbi_failure_reason() + ")");
+    const std::size_t texels = std::size_t(w) * std::size_t(h);
+    if (w > kMaxGltfImageSide || h > kMaxGltfImageSide || texels > kMaxGltfImageTexels)
+        return refuse(std::to_string(w) + " x " + std::to_string(h) +
+                      " texels (the limit is 16,384 a side and 67,108,864 in all)");
+    if (folder->image_bytes + 4 * texels > kMaxGltfImageBytes)
+        return refuse("the images take more than 1 GiB decoded (the limit)");
+    unsigned char* pixels = stbi_load_from_memory(bytes, size, &w, &h, &channels, 4);
+    if (!pixels) return refuse(std::string("cannot be decoded (stb_image: ") + stbi_failure_reason() + ")");
+    image->width = w;
+    image->height = h;
+    image->component = 4;
+    image->bits = 8;
+    image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image->image.assign(pixels, pixels + 4 * std::size_t(w) * std::size_t(h));
+    stbi_image_free(pixels);
+    folder->image_bytes += 4 * texels;
     return true;
 }
 
@@ -281,7 +315,7 @@ tinygltf::Model parse_gltf_model(const std::string& bytes, const std::string& fi
     Folder where{fs::path(folder), file, ""};
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({file_exists, expand_file_path, read_whole_file, write_whole_file, &where});
-    loader.SetImageLoader(skip_image, nullptr);
+    loader.SetImageLoader(decode_image, &where);
     tinygltf::Model model;
     std::string err, warn;
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());

@@ -4,7 +4,8 @@
 // against the file, the JSON's required extensions, every buffer's and
 // image's uri (relative, no scheme but data:, never out of the model's
 // folder) -- and tinygltf reads other files only through callbacks that
-// apply the same rules. Every problem is an InputError naming the file
+// apply the same rules. Images are decoded here, by stb_image, within the
+// limits below. Every problem is an InputError naming the file
 // (with the JSON's line and column where tinygltf's parser gives them).
 // Only the .cpp files of src/gltf include this header (tinygltf's types).
 #pragma once
@@ -26,6 +27,12 @@ inline constexpr std::size_t kMaxGltfAccessorValues = std::size_t(1) << 26;
 // Vertices of all the morphed and skinned copies (each node deforms its own;
 // 2^22: about 250 MB of copies at most).
 inline constexpr std::size_t kMaxGltfDeformedVertices = std::size_t(1) << 22;
+
+// Images (PNG or JPEG, decoded by stb_image to 8-bit RGBA): at most 16,384
+// texels a side and 2^26 texels each (256 MiB decoded), 1 GiB decoded in all.
+inline constexpr int kMaxGltfImageSide = 16384;
+inline constexpr std::size_t kMaxGltfImageTexels = std::size_t(1) << 26;
+inline constexpr std::size_t kMaxGltfImageBytes = std::size_t(1) << 30;
 
 // The extensions firsthit implements; a file that requires any other is
 // refused, naming it.

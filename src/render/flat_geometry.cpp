@@ -72,6 +72,9 @@ void flatten(const Scene& scene, FlatGeometry<T>& g) {
     g.surfaces.reserve(size_t(g.ids.end()));
     g.shapes.each([&](const auto& s) { g.surfaces.push_back(s.surface()); });
     for (const auto& p : g.planes) g.surfaces.push_back(p.surface());
+    g.uvs.clear();
+    for (const auto& c : scene.triangle_uvs)
+        g.uvs.push_back({T(c[0].x), T(c[0].y), T(c[1].x), T(c[1].y), T(c[2].x), T(c[2].y)});
     g.triangles.reserve(g.triangle_source.size());
     for (const std::int32_t i : g.triangle_source) {
         const Triangle<double>& t = scene.triangles[size_t(i)];

@@ -55,6 +55,22 @@ struct BoundingSphere {
     }
 };
 
+// The barycentric weights b1, b2 of points v0 + d over a triangle's edges
+// e1, e2 (d00, d01, d11: their dot products; inv_denominator: 1 / (d00 d11
+// - d01^2)), clamped to the triangle: a point rounding puts just outside an
+// edge gets that edge's weights, not extrapolated ones.
+template <typename T>
+FH_HOT_INLINE void clamped_weights(const Vec3Lanes<T>& d, const Vec3<T>& e1, const Vec3<T>& e2, T d00, T d01, T d11,
+                                   T inv_denominator, Lanes<T>& b1, Lanes<T>& b2) {
+    const Lanes<T> d20 = dot(d, e1), d21 = dot(d, e2);
+    const Lanes<T> zero = splat(T(0)), one = splat(T(1));
+    b1 = max(zero, min(one, (d11 * d20 - d01 * d21) * inv_denominator));
+    b2 = max(zero, min(one, (d00 * d21 - d01 * d20) * inv_denominator));
+    const Lanes<T> over = max(one, b1 + b2);  // b0 = 1 - b1 - b2 >= 0
+    b1 = b1 / over;
+    b2 = b2 / over;
+}
+
 // A smooth-shaded triangle's vertex normals, with what turns a point of the
 // triangle into barycentric weights: p - v0 = b1 e1 + b2 e2, solved by the
 // normal equations (Ericson, Real-Time Collision Detection, 3.4).
@@ -70,16 +86,16 @@ struct SmoothTriangle {
     // unit. Weights are clamped to the triangle, so a point rounding puts
     // just outside an edge gets that edge's normal, not an extrapolated one.
     FH_HOT_INLINE Vec3Lanes<T> normal_at(const Vec3Lanes<T>& p) const {
-        const Vec3Lanes<T> d = p - v0;
-        const Lanes<T> d20 = dot(d, e1), d21 = dot(d, e2);
-        const Lanes<T> zero = splat(T(0)), one = splat(T(1));
-        Lanes<T> b1 = max(zero, min(one, (d11 * d20 - d01 * d21) * inv_denominator));
-        Lanes<T> b2 = max(zero, min(one, (d00 * d21 - d01 * d20) * inv_denominator));
-        const Lanes<T> over = max(one, b1 + b2);  // b0 = 1 - b1 - b2 >= 0
-        b1 = b1 / over;
-        b2 = b2 / over;
-        return normalize((one - b1 - b2) * n0 + b1 * n1 + b2 * n2);
+        Lanes<T> b1, b2;
+        clamped_weights(p - v0, e1, e2, d00, d01, d11, inv_denominator, b1, b2);
+        return normalize((T(1) - b1 - b2) * n0 + b1 * n1 + b2 * n2);
     }
+};
+
+// A triangle's texture coordinates: (u, v) at v0, v1 and v2.
+template <typename T>
+struct TriangleUvs {
+    T u0, v0, u1, v1, u2, v2;
 };
 
 // The normal turned to face the ray (report 8.4).
@@ -131,6 +147,9 @@ struct FlatGeometry {
     // (Last in the struct, so that double's code, which never reads it,
     // stays as it was.)
     BigArray<T> packed_rows;
+    // An instance's textured mesh: each triangle's texture coordinates, by
+    // its index in the Scene (triangle_source's values); else empty.
+    BigArray<TriangleUvs<T>> uvs;
     static constexpr bool kPackedRows = std::is_same_v<T, float>;
 
     // pool: the BVH is built on it (nullptr: on the calling thread).
@@ -165,6 +184,19 @@ struct FlatGeometry {
         const PrimitiveSurface<T>& s = surfaces[size_t(prim)];
         s.project(p, point, normal);
         shading = s.smooth < 0 ? normal : smooth_triangles[size_t(s.smooth)].normal_at(point);
+    }
+
+    // Texture coordinates (u, v) at points p of triangle `prim` (uvs not empty).
+    FH_HOT_INLINE void uv_at(int prim, const Vec3Lanes<T>& p, Lanes<T>& u, Lanes<T>& v) const {
+        const size_t k = size_t(ids.triangle_index(prim));
+        const Triangle<T>& t = triangles[k];
+        const TriangleUvs<T>& c = uvs[size_t(triangle_source[k])];
+        const Vec3<T> e1 = t.v1 - t.v0, e2 = t.v2 - t.v0;
+        const T d00 = glm::dot(e1, e1), d01 = glm::dot(e1, e2), d11 = glm::dot(e2, e2);
+        Lanes<T> b1, b2;
+        clamped_weights(p - Vec3Lanes<T>::splat(t.v0), e1, e2, d00, d01, d11, T(1) / (d00 * d11 - d01 * d01), b1, b2);
+        u = c.u0 + b1 * (c.u1 - c.u0) + b2 * (c.u2 - c.u0);
+        v = c.v0 + b1 * (c.v1 - c.v0) + b2 * (c.v2 - c.v0);
     }
 
     // Point, normals facing the ray, and material of one hit (tests): the

@@ -48,14 +48,18 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
     }
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const Material<double>& mat = scene.materials[m];
-        if (mat.emissive != dvec3(0)) ambient[m] += mat.emissive;  // (only then: bytes as before for the report's)
+        const bool textured = mat.texture >= 0 && (fx.ambient || fx.diffuse);
+        // (Added only when there is some: bytes as before for the report's.)
+        if (mat.emissive != dvec3(0) && !textured) ambient[m] += mat.emissive;
         const int whole = whole_exponent(mat.phong_exponent);
         f.shading.push_back({Color<T>(ambient[m]), mat.glazed, T(mat.reflectivity), T(mat.phong_exponent),
-                             whole >= 0});
+                             whole >= 0, textured ? mat.texture : -1, textured ? Color<T>(mat.emissive) : Color<T>(0)});
+        f.textured |= textured;
         f.fractional_exponents |= whole < 0 && fx.specular;
         if (whole > 0) f.exponent_bits = std::max(f.exponent_bits, int(std::bit_width(unsigned(whole))));
     }
 
+    if (f.textured) f.textures = scene.textures;
     if (!fx.diffuse && !fx.specular) return f;
     // One row of colour products per light, by material.
     auto add_terms = [&](std::vector<LightTerms<T>>& out, const dvec3& color, double strength) {

@@ -21,6 +21,11 @@ struct MaterialShading {
     T reflectivity = 0;
     T exponent = 0;       // Phong
     bool whole_exponent = true;  // the exponent is whole and at most kWholePowerLimit
+    // A textured material (FlatScene::textures; -1: none): its texel colour
+    // multiplies `ambient` and the diffuse terms, and its emissive colour,
+    // kept apart here (in `ambient` otherwise), is added after.
+    int texture = -1;
+    Color<T> emissive{0};
 };
 
 // intensity * strength * (light colour (.) material colour), for one light and
@@ -44,6 +49,8 @@ struct FlatScene {
     // Each light's colour products with each material: [light * shading.size() + material].
     std::vector<LightTerms<T>> directional_terms;
     std::vector<LightTerms<T>> spot_terms;
+    std::vector<Texture> textures;  // Scene::textures, when some material is textured
+    bool textured = false;          // some material is (instances only: glTF's)
     bool fractional_exponents = false;  // some material has whole == false: std::pow needed
     int exponent_bits = 0;              // bits of the largest whole exponent
     EffectPlan plan;

@@ -7,12 +7,17 @@ namespace fh {
 
 namespace {
 
-// A mesh's triangles in its own space, as a scene of their own.
+// A mesh's triangles in its own space, as a scene of their own, with their
+// texture coordinates.
 Scene mesh_scene(const Mesh& mesh) {
     Scene s;
     PlacedMesh placed = place(mesh, glm::dmat4(1.0));
     s.triangles = std::move(placed.triangles);
     s.vertex_normals = std::move(placed.vertex_normals);
+    if (!mesh.uvs.empty()) {
+        s.triangle_uvs.reserve(mesh.triangles.size());
+        for (const auto& t : mesh.triangles) s.triangle_uvs.push_back({mesh.uvs[t[0]], mesh.uvs[t[1]], mesh.uvs[t[2]]});
+    }
     return s;
 }
 
@@ -40,7 +45,7 @@ Aabb mesh_box(const Mesh& mesh) {
 // An instance's maps in T. One 3 x 3 inverse serves both ways: the inverse
 // of p -> A p + b is p -> A^-1 (p - b), and normals go by A^-T.
 template <typename T>
-FlatInstance<T> flat_instance(const Instance& i) {
+FlatInstance<T> flat_instance(const Instance& i, int cutout) {
     const glm::dmat3 a(i.to_world);
     const glm::dmat3 inverse = glm::inverse(a);
     const dvec3 b(i.to_world[3]);
@@ -52,6 +57,7 @@ FlatInstance<T> flat_instance(const Instance& i) {
     f.normal_to_world = AffineMap<T>::from(glm::dmat4(glm::transpose(inverse)));
     f.mesh = i.mesh;
     f.material = i.material;
+    f.cutout = cutout;
     return f;
 }
 
@@ -63,10 +69,19 @@ void place_instances(const Scene& scene, const std::vector<Aabb>& mesh_boxes, co
     const auto start = std::chrono::steady_clock::now();
     set.instances.clear();
     set.instances.reserve(scene.instances.size());
+    set.cutouts.clear();
+    std::vector<int> cutout_of(scene.materials.size(), -1);
+    for (size_t m = 0; m < scene.materials.size(); ++m) {
+        const Material<double>& mat = scene.materials[m];
+        if (!mat.cutout) continue;
+        cutout_of[m] = int(set.cutouts.size());
+        set.cutouts.push_back({mat.texture >= 0 ? scene.textures[size_t(mat.texture)] : Texture{}, float(mat.alpha),
+                               float(mat.alpha_cutoff)});
+    }
     std::vector<Aabb> boxes;
     boxes.reserve(scene.instances.size());
     for (const Instance& i : scene.instances) {
-        set.instances.push_back(flat_instance<T>(i));
+        set.instances.push_back(flat_instance<T>(i, cutout_of[size_t(i.material)]));
         boxes.push_back(world_box(mesh_boxes[size_t(i.mesh)], i.to_world));
     }
     if (previous && previous->bvh.prims.size() == boxes.size()) {

@@ -67,9 +67,11 @@ FH_HOT_INLINE LaneInts<T> closest_instance_hits(const InstanceSet<T>& set, const
             const RayPacket<T> local = instance.enter(ray, scale);
             const Lanes<T> limit = select(entering, h.t * scale * kInstanceReach<T>, splat(T(0)));
             const FlatGeometry<T>& mesh = *set.meshes[size_t(instance.mesh)];
-            const HitLanes<T> m = count(entering) <= kAlone<T> && !mesh.wide.empty()
-                                      ? hits_one_by_one(mesh, local, entering, limit)
-                                      : closest_hits_within(mesh, local, entering, limit);
+            HitLanes<T> m = count(entering) <= kAlone<T> && !mesh.wide.empty()
+                                ? hits_one_by_one(mesh, local, entering, limit)
+                                : closest_hits_within(mesh, local, entering, limit);
+            if (instance.cutout >= 0)
+                m = past_cutouts(mesh, set.cutouts[size_t(instance.cutout)], local, entering, limit, m);
             const Lanes<T> t = m.t / scale;
             const LaneInts<T> tie = (t == h.t) & ((on > i) | ((on == i) & (h.prim > m.prim)));
             const LaneInts<T> nearer = (m.prim != kNoHit) & ((t < h.t) | tie);
@@ -95,9 +97,15 @@ FH_HOT_INLINE LaneInts<T> occluded_by_instances(const InstanceSet<T>& set, const
             const RayPacket<T> local = instance.enter(ray, scale);
             const LaneInts<T> asking = entering & (t_max > T(0));
             const FlatGeometry<T>& mesh = *set.meshes[size_t(instance.mesh)];
-            blocked |= count(asking) <= kAlone<T> && !mesh.wide.empty()
-                           ? blocked_one_by_one(mesh, local, t_max * scale, asking)
-                           : occluded(mesh, local, t_max * scale, asking);
+            if (instance.cutout >= 0)  // blocked where the nearest point that is not a hole lies below t_max
+                blocked |= asking & (past_cutouts(mesh, set.cutouts[size_t(instance.cutout)], local, asking,
+                                                  t_max * scale,
+                                                  closest_hits_within(mesh, local, asking, t_max * scale))
+                                         .prim != kNoHit);
+            else
+                blocked |= count(asking) <= kAlone<T> && !mesh.wide.empty()
+                               ? blocked_one_by_one(mesh, local, t_max * scale, asking)
+                               : occluded(mesh, local, t_max * scale, asking);
             t_max = select(blocked, splat(T(0)), t_max);
             if (all(blocked | ~active)) return true;
         }

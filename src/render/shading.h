@@ -104,6 +104,7 @@ private:
         Lanes<T> reflectivity;
         LaneInts<T> glazed;
         LaneInts<T> material;
+        ColorLanes<T> albedo;  // a textured scene's texel colours (1: none); else unused
     };
 
     // Calls fn(id, lanes, first) for each distinct id among the lanes in
@@ -203,23 +204,54 @@ private:
         for_each_distinct_pair(instance, h.prim, hit, [&](int in, int prim, const LaneInts<T>& lanes, auto first)
                                                           FH_HOT_LAMBDA {
             Vec3Lanes<T> point, normal, shading;
-            int material;
             if (in < 0) {
                 geometry_.project(prim, p, point, normal, shading);
-                material = geometry_.surfaces[size_t(prim)].material;
-            } else {
-                const FlatInstance<T>& inst = instances_->instances[size_t(in)];
-                const FlatGeometry<T>& mesh = *instances_->meshes[size_t(inst.mesh)];
-                mesh.project(prim, inst.to_object.point(p), point, normal, shading);
-                const bool smooth = mesh.surfaces[size_t(prim)].smooth >= 0;
-                point = inst.to_world.point(point);
-                normal = normalize(inst.normal_to_world.vector(normal));
-                shading = smooth ? normalize(inst.normal_to_world.vector(shading)) : normal;
-                material = inst.material;
+                put_hit(point, normal, shading, geometry_.surfaces[size_t(prim)].material, lanes, first, s, geometric,
+                        ambient);
+                if (scene_.textured) put(s.albedo, ColorLanes<T>::splat(Color<T>(1)), lanes, first);
+                return;
             }
-            put_hit(point, normal, shading, material, lanes, first, s, geometric, ambient);
+            const FlatInstance<T>& inst = instances_->instances[size_t(in)];
+            const FlatGeometry<T>& mesh = *instances_->meshes[size_t(inst.mesh)];
+            mesh.project(prim, inst.to_object.point(p), point, normal, shading);
+            const bool smooth = mesh.surfaces[size_t(prim)].smooth >= 0;
+            const Vec3Lanes<T> object_point = point;
+            point = inst.to_world.point(point);
+            normal = normalize(inst.normal_to_world.vector(normal));
+            shading = smooth ? normalize(inst.normal_to_world.vector(shading)) : normal;
+            put_hit(point, normal, shading, inst.material, lanes, first, s, geometric, ambient);
+            if (scene_.textured) textured(mesh, prim, object_point, inst.material, lanes, first, s, ambient);
         });
         finish_surfaces(ray, hit, geometric, ambient, s, local);
+    }
+
+    // A textured material's texel colours at an instance's points (in its
+    // mesh's space) into s.albedo, and its ambient term times them (plus
+    // its emissive colour) into ambient; untextured: albedo 1. One texel
+    // sample per hit, no allocation.
+    template <typename First>
+    FH_HOT_INLINE void textured(const FlatGeometry<T>& mesh, int prim, const Vec3Lanes<T>& point, int material,
+                                const LaneInts<T>& lanes, First first, SurfaceLanes& s, ColorLanes<T>& ambient) const {
+        const MaterialShading<T>& m = scene_.shading[size_t(material)];
+        const Lanes<T> one = splat(T(1));
+        ColorLanes<T> albedo{one, one, one};
+        if (m.texture < 0 || mesh.uvs.empty()) {
+            put(s.albedo, albedo, lanes, first);
+            return;
+        }
+        const Texture& texture = scene_.textures[size_t(m.texture)];
+        Lanes<T> u, v;
+        mesh.uv_at(prim, point, u, v);
+        for (int lane = 0; lane < kLanes<T>; ++lane) {
+            if (!lanes[lane]) continue;
+            const std::array<float, 4> c = texture.sample(double(u[lane]), double(v[lane]));
+            albedo.x[lane] = T(c[0]);
+            albedo.y[lane] = T(c[1]);
+            albedo.z[lane] = T(c[2]);
+        }
+        put(s.albedo, albedo, lanes, first);
+        put(ambient, ColorLanes<T>{albedo.x * m.ambient.x, albedo.y * m.ambient.y, albedo.z * m.ambient.z} + m.emissive,
+            lanes, first);
     }
 
     // Calls fn(a, b, lanes, first) for each distinct pair (a, b) among the
@@ -286,6 +318,8 @@ private:
                 put(whole_exponent, material.whole_exponent ? lanes : LaneInts<T>{}, lanes, first);
             }
         });
+        if constexpr (kInstances)
+            if (scene_.textured) kd = {kd.x * s.albedo.x, kd.y * s.albedo.y, kd.z * s.albedo.z};
         // A select, not a product with 0: an unlit lane may hold NaN.
         const Lanes<T> diffuse = select(lit, light.intensity * n_dot_l, zero);
         Lanes<T> specular = zero;

@@ -22,6 +22,15 @@ struct Material {
     // Light the surface gives off itself (0..255 a channel, added as it is,
     // lit or not: a glTF material's emissive). The report's materials have none.
     Color<T> emissive{0};
+    // A glTF material's base colour texture (into Scene::textures; -1:
+    // none): its colour multiplies the ambient and diffuse colours per hit.
+    int texture = -1;
+    // glTF's alphaMode MASK: the surface is there only where its alpha --
+    // `alpha` times the texture's -- is at least alpha_cutoff; elsewhere
+    // camera and shadow rays pass through it.
+    bool cutout = false;
+    T alpha = 1;
+    T alpha_cutoff = T(0.5);
 };
 
 // The exponent as a whole number, so shading can use repeated squaring; -1

@@ -35,6 +35,9 @@ struct Mesh {
     std::vector<std::array<std::uint32_t, 3>> triangles;  // indices into positions
     int material = 0;
     bool smooth = false;  // shade with interpolated vertex normals
+    // One texture coordinate (u, v) per position (a glTF TEXCOORD set, its
+    // material's KHR_texture_transform applied), or empty.
+    std::vector<dvec2> uvs;
 };
 
 struct PlacedMesh {

@@ -20,6 +20,7 @@
 #include "scene/mesh.h"
 #include "scene/node.h"
 #include "scene/spot_light.h"
+#include "scene/texture.h"
 
 namespace fh {
 
@@ -47,12 +48,16 @@ struct NamedSurface {
 struct Scene {
     std::vector<std::string> material_names;  // parallel to materials
     std::vector<Material<double>> materials;
+    std::vector<Texture> textures;  // what materials' `texture` indexes
     BoundedShapes<double> shapes;  // spheres and any other bounded shape (geometry/shapes.h)
     std::vector<Plane<double>> planes;
     std::vector<Triangle<double>> triangles;
     // Empty, or one per triangle: the vertex normals smooth shading
     // interpolates (all three zero: the triangle is shaded flat).
     std::vector<std::array<dvec3, 3>> vertex_normals;
+    // Empty, or one per triangle: its vertices' texture coordinates (an
+    // instance's mesh, render/instance_set.cpp).
+    std::vector<std::array<dvec2, 3>> triangle_uvs;
     std::vector<AmbientLight<double>> ambient_lights;  // at most one
     std::vector<DirectionalLight<double>> directional_lights;
     std::vector<SpotLight<double>> spot_lights;
