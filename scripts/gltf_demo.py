@@ -4,9 +4,11 @@ across a floor on two spinning wheels (a node hierarchy, LINEAR translation
 and LINEAR rotation by slerp), a ball that bounces (CUBICSPLINE), a beacon
 that hops from post to post (STEP), a tentacle that sways (a skin of three
 joints), a blob that squashes (a morph target, its weight animated), a
-camera on a node, and a directional, a point and a spot light
-(KHR_lights_punctual). One .gltf file, its buffer in a data: URI; glTF is
-y-up.
+camera on a node, a directional, a point and a spot light
+(KHR_lights_punctual), a floor of textured tiles (a PNG repeated,
+KHR_texture_transform) and a trellis whose bars are a cutout (alphaMode
+MASK): the floor shows through its holes, and the sun throws the grid's
+shadow. One .gltf file, its buffer and images in data: URIs; glTF is y-up.
 
     python3 scripts/gltf_demo.py OUT.gltf
 """
@@ -15,6 +17,7 @@ import json
 import math
 import struct
 import sys
+import zlib
 
 
 def box(sx, sy, sz):
@@ -118,6 +121,36 @@ def quat_look(eye, target):
             w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2, w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2]
 
 
+def png(width, height, texel):
+    """An 8-bit RGBA PNG of texel(x, y) -> (r, g, b, a), rows from the top."""
+    rows = b"".join(b"\0" + bytes(c for x in range(width) for c in texel(x, y)) for y in range(height))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
+
+
+def tile(x, y):
+    """Floor tiles: two greys in a checker of 16-texel squares, a darker grout line."""
+    if x % 16 == 0 or y % 16 == 0:
+        return (70, 70, 78, 255)
+    return (200, 196, 186, 255) if (x // 16 + y // 16) % 2 == 0 else (150, 160, 175, 255)
+
+
+def trellis(x, y):
+    """A trellis: wooden bars 4 texels wide every 16, see-through between (alpha 0)."""
+    if x % 16 < 4 or y % 16 < 4:
+        return (150, 100, 55, 255)
+    return (0, 0, 0, 0)
+
+
+def quad(sx, sz):
+    """A horizontal square facing up (+y), centred on the origin, with texture coordinates 0..1."""
+    pos = [[-sx / 2, 0, -sz / 2], [sx / 2, 0, -sz / 2], [sx / 2, 0, sz / 2], [-sx / 2, 0, sz / 2]]
+    return pos, [[0, 1, 0]] * 4, [0, 2, 1, 0, 3, 2], [[0, 0], [1, 0], [1, 1], [0, 1]]
+
+
 class Builder:
     def __init__(self):
         self.data = bytearray()
@@ -168,8 +201,22 @@ def main(out):
         {"name": "post", "pbrMetallicRoughness": {"baseColorFactor": [0.3, 0.5, 0.3, 1], "metallicFactor": 0, "roughnessFactor": 0.7}},
         {"name": "tentacle", "pbrMetallicRoughness": {"baseColorFactor": [0.55, 0.25, 0.75, 1], "metallicFactor": 0, "roughnessFactor": 0.35}},
         {"name": "blob", "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.75, 0.6, 1], "metallicFactor": 0, "roughnessFactor": 0.3}},
+        {"name": "trellis", "alphaMode": "MASK", "alphaCutoff": 0.5, "doubleSided": True,
+         "pbrMetallicRoughness": {"baseColorTexture": {"index": 1}, "metallicFactor": 0, "roughnessFactor": 0.9}},
     ]
-    meshes = [b.mesh(box(14, 0.2, 8), 0), b.mesh(box(2.2, 0.8, 1.3), 1), b.mesh(wheel(0.45, 0.3), 2),
+    # The floor's tiles: 64 x 64 texels repeated, a tile a unit (a texture
+    # transform scales the floor's coordinates, 1 a unit, by 0.25).
+    materials[0]["pbrMetallicRoughness"]["baseColorFactor"] = [1, 1, 1, 1]
+    materials[0]["pbrMetallicRoughness"]["baseColorTexture"] = {
+        "index": 0, "extensions": {"KHR_texture_transform": {"scale": [0.25, 0.25]}}}
+    images = [{"uri": "data:image/png;base64," + base64.b64encode(png(64, 64, tile)).decode()},
+              {"uri": "data:image/png;base64," + base64.b64encode(png(64, 64, trellis)).decode()}]
+    textures = [{"sampler": 0, "source": 0}, {"sampler": 1, "source": 1}]
+    samplers = [{"magFilter": 9729, "wrapS": 10497, "wrapT": 10497},
+                {"magFilter": 9728, "wrapS": 33071, "wrapT": 33071}]
+    floor = box(14, 0.2, 8)
+    floor_uv = b.accessor([[p[0], p[2]] for p in floor[0]], "VEC2")
+    meshes = [b.mesh(floor, 0, {"TEXCOORD_0": floor_uv}), b.mesh(box(2.2, 0.8, 1.3), 1), b.mesh(wheel(0.45, 0.3), 2),
               b.mesh(sphere(0.6), 3), b.mesh(box(0.4, 0.4, 0.4), 4), b.mesh(box(0.3, 1.2, 0.3), 5)]
     nodes = [
         {"name": "floor", "mesh": 0, "translation": [0, -0.1, 0]},
@@ -190,6 +237,12 @@ def main(out):
     nodes.append({"name": "back wheel (far side)", "mesh": 2, "translation": [-0.75, -0.4, -0.75]})
     nodes[5]["children"] = [9]  # the spot shines down from the beacon
     scene_nodes = [0, 1, 4, 5, 6, 7, 8, 10, 11, 12]
+
+    # The trellis: a 2.4-unit square roof at 1.9 over the right of the floor, which the cart drives under.
+    pos, nrm, idx, uv = quad(2.4, 2.4)
+    meshes.append(b.mesh((pos, nrm, idx), 8, {"TEXCOORD_0": b.accessor(uv, "VEC2")}))
+    nodes.append({"name": "trellis", "mesh": len(meshes) - 1, "translation": [3.6, 1.9, 2.6]})
+    scene_nodes.append(len(nodes) - 1)
 
     # A skin: a tube 2.4 tall standing at (5, 0, -2), its joints at heights
     # 0, 0.8 and 1.6, each vertex weighted between the two nearest (a tent
@@ -276,12 +329,15 @@ def main(out):
     }
     gltf = {
         "asset": {"version": "2.0", "generator": "firsthit scripts/gltf_demo.py"},
-        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensionsUsed": ["KHR_lights_punctual", "KHR_texture_transform"],
         "scene": 0,
         "scenes": [{"nodes": scene_nodes}],
         "nodes": nodes,
         "meshes": meshes,
         "materials": materials,
+        "images": images,
+        "textures": textures,
+        "samplers": samplers,
         "skins": skins,
         "cameras": [{"name": "front", "type": "perspective", "perspective": {"yfov": 0.75, "aspectRatio": 16 / 9, "znear": 0.1}}],
         "extensions": {"KHR_lights_punctual": {"lights": [

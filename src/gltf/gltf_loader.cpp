@@ -407,13 +407,22 @@ private:
                       " in mode " + std::to_string(prim.mode));
         if (prim.material < 0 || size_t(prim.material) >= m_.materials.size()) return;
         const tinygltf::Material& mat = m_.materials[size_t(prim.material)];
-        for (const int set : {mat.pbrMetallicRoughness.baseColorTexture.index >= 0 ? mat.pbrMetallicRoughness.baseColorTexture.texCoord : -1,
+        for (const int set : {mat.pbrMetallicRoughness.baseColorTexture.index >= 0 ? base_color_set(mat) : -1,
                               mat.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 ? mat.pbrMetallicRoughness.metallicRoughnessTexture.texCoord : -1,
                               mat.normalTexture.index >= 0 ? mat.normalTexture.texCoord : -1,
                               mat.occlusionTexture.index >= 0 ? mat.occlusionTexture.texCoord : -1,
                               mat.emissiveTexture.index >= 0 ? mat.emissiveTexture.texCoord : -1})
             if (set >= 0 && !prim.attributes.count("TEXCOORD_" + std::to_string(set)))
                 fail(what + ": its material reads TEXCOORD_" + std::to_string(set) + ", which it does not have");
+    }
+
+    // The TEXCOORD set a material's base colour texture reads: its own,
+    // or its KHR_texture_transform's texCoord, which overrides it.
+    static int base_color_set(const tinygltf::Material& mat) {
+        const tinygltf::TextureInfo& info = mat.pbrMetallicRoughness.baseColorTexture;
+        if (const tinygltf::Value* t = extension_value(info.extensions, "KHR_texture_transform", "texCoord"))
+            if (t->IsInt()) return t->GetNumberAsInt();
+        return info.texCoord;
     }
 
     // The texture coordinates the primitive's base colour texture reads
@@ -459,6 +468,9 @@ private:
         for (size_t i = 0; i < uvs.size(); ++i) {
             const double u = scale.x * t[2 * i], v = scale.y * t[2 * i + 1];
             uvs[i] = {c * u + sn * v + offset.x, -sn * u + c * v + offset.y};
+            if (!std::isfinite(uvs[i].x) || !std::isfinite(uvs[i].y))
+                fail(what + ": KHR_texture_transform takes TEXCOORD_" + std::to_string(set) + " " +
+                     std::to_string(i) + " past a double's range");
         }
         return uvs;
     }

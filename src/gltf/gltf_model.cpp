@@ -140,13 +140,28 @@ bool decode_image(tinygltf::Image* image, const int index, std::string*, std::st
     const bool png = size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0;
     const bool jpeg = size >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff;
     if (!png && !jpeg) return refuse("not a PNG or JPEG image");
+    auto too_large = [&](std::uint64_t w, std::uint64_t h) {
+        return w > std::uint64_t(kMaxGltfImageSide) || h > std::uint64_t(kMaxGltfImageSide) ||
+               w * h > kMaxGltfImageTexels;
+    };
+    auto refuse_size = [&](std::uint64_t w, std::uint64_t h) {
+        return refuse(std::to_string(w) + " x " + std::to_string(h) +
+                      " texels (the limit is 16,384 a side and 67,108,864 in all)");
+    };
+    // A PNG's size straight from its IHDR: stb_image refuses some large
+    // headers itself with a vaguer reason ("unknown image type").
+    if (png && size >= 24) {
+        auto be32 = [&](int at) {
+            return std::uint64_t(bytes[at]) << 24 | std::uint64_t(bytes[at + 1]) << 16 |
+                   std::uint64_t(bytes[at + 2]) << 8 | std::uint64_t(bytes[at + 3]);
+        };
+        if (too_large(be32(16), be32(20))) return refuse_size(be32(16), be32(20));
+    }
     int w = 0, h = 0, channels = 0;
     if (!stbi_info_from_memory(bytes, size, &w, &h, &channels))
         return refuse(std::string("cannot be decoded (stb_image: ") + stbi_failure_reason() + ")");
     const std::size_t texels = std::size_t(w) * std::size_t(h);
-    if (w > kMaxGltfImageSide || h > kMaxGltfImageSide || texels > kMaxGltfImageTexels)
-        return refuse(std::to_string(w) + " x " + std::to_string(h) +
-                      " texels (the limit is 16,384 a side and 67,108,864 in all)");
+    if (too_large(std::uint64_t(w), std::uint64_t(h))) return refuse_size(std::uint64_t(w), std::uint64_t(h));
     if (folder->image_bytes + 4 * texels > kMaxGltfImageBytes)
         return refuse("the images take more than 1 GiB decoded (the limit)");
     unsigned char* pixels = stbi_load_from_memory(bytes, size, &w, &h, &channels, 4);

@@ -26,49 +26,67 @@ struct Cutout {
     float alpha = 1;
     float cutoff = 0.5f;
 
-    bool solid(double u, double v) const {
-        const float a = texture.image ? alpha * texture.sample(u, v)[3] : alpha;
-        return a >= cutoff;
+    // Per lane of `lanes`: the surface is there at (u, v).
+    template <typename T>
+    FH_HOT_INLINE LaneInts<T> solid(const Lanes<T>& u, const Lanes<T>& v, const LaneInts<T>& lanes) const {
+        if (!texture.image) return alpha >= cutoff ? lanes : LaneInts<T>{};
+        return lanes & (T(alpha) * texture.sample<T>(u, v).a >= T(cutoff));
     }
 };
 
-// Whether the surface of triangle `prim` of `mesh` is there at point p.
+// Per lane: whether the surface is there at the points p of the active
+// lanes' triangles prim (in the mesh's space), one triangle at a time.
 template <typename T>
-bool solid_at(const FlatGeometry<T>& mesh, const Cutout& cut, int prim, const Vec3<T>& p) {
-    if (!cut.texture.image || mesh.uvs.empty()) return cut.solid(0, 0);
-    Lanes<T> u, v;
-    mesh.uv_at(prim, Vec3Lanes<T>::splat(p), u, v);
-    return cut.solid(double(u[0]), double(v[0]));
+FH_HOT_INLINE LaneInts<T> solid_at(const FlatGeometry<T>& mesh, const Cutout& cut, const LaneInts<T>& prim,
+                                   const Vec3Lanes<T>& p, LaneInts<T> active) {
+    if (!cut.texture.image || mesh.uvs.empty()) return cut.alpha >= cut.cutoff ? active : LaneInts<T>{};
+    LaneInts<T> solid{};
+    while (any(active)) {
+        int first = 0;
+        while (!active[first]) ++first;
+        const LaneInts<T> same = active & (prim == prim[first]);
+        Lanes<T> u, v;
+        mesh.uv_at(int(prim[first]), p, u, v);
+        solid |= cut.solid<T>(u, v, same);
+        active &= ~same;
+    }
+    return solid;
 }
 
-// m: the nearest hits of the active rays on `mesh` below `limit`. Each ray
-// whose hit is a hole is taken on past it (from the far side of the face,
-// by the offset secondary rays use) until a solid point, which becomes its
-// hit, or nothing below its limit (kNoHit).
+// m: the nearest hits of the active rays on `mesh` below `limit`. The rays
+// whose hits are holes go on from just past them -- from the far side of
+// the face, by the offset secondary rays use -- together, as a packet,
+// until each meets a solid point, which becomes its hit, or nothing below
+// its limit (kNoHit).
 template <typename T>
 __attribute__((noinline)) HitLanes<T> past_cutouts(const FlatGeometry<T>& mesh, const Cutout& cut,
-                                                   const RayPacket<T>& ray, const LaneInts<T>& active,
+                                                   RayPacket<T> ray, const LaneInts<T>& active,
                                                    const Lanes<T>& limit, HitLanes<T> m) {
-    for (int lane = 0; lane < kLanes<T>; ++lane) {
-        if (!active[lane] || m.prim[lane] == kNoHit) continue;
-        const Vec3<T> d = ray.direction.lane(lane);
-        Ray<T> r = ray.lane(lane);
-        T t = m.t[lane], travelled = 0;
-        int prim = int(m.prim[lane]);
-        for (int layer = 1; layer < kMaxCutoutLayers && prim != kNoHit; ++layer) {
-            if (solid_at(mesh, cut, prim, r.origin + t * d)) break;
-            const SurfacePoint<T> hole = mesh.surface(r, {t, prim, -1});
-            const Vec3<T> o = offset_origin(hole.point, -hole.normal);
-            travelled += glm::dot(o - r.origin, d);
-            r = {o, d};
-            const HitLanes<T> next =
-                closest_hits_within(mesh, RayPacket<T>::splat(r), first_lanes<T>(1), splat(limit[lane] - travelled));
-            t = next.t[0];
-            prim = int(next.prim[0]);
+    LaneInts<T> open = active & (m.prim != kNoHit);
+    Lanes<T> travelled = splat(T(0));
+    for (int layer = 1; layer < kMaxCutoutLayers && any(open); ++layer) {
+        const Vec3Lanes<T> p = ray.at(select(open, m.t, splat(T(0))));
+        const LaneInts<T> hole = open & ~solid_at(mesh, cut, m.prim, p, open);
+        if (none(hole)) break;
+        // Each hole's face normal, turned away from the ray: the new origin
+        // lies just beyond the face.
+        Vec3Lanes<T> beyond = ray.direction;
+        for (int lane = 0; lane < kLanes<T>; ++lane) {
+            if (!hole[lane]) continue;
+            const Vec3<T> n = mesh.triangles[size_t(mesh.ids.triangle_index(int(m.prim[lane])))].normal;
+            const T side = glm::dot(n, ray.direction.lane(lane)) > T(0) ? T(1) : T(-1);
+            beyond.x[lane] = side * n.x, beyond.y[lane] = side * n.y, beyond.z[lane] = side * n.z;
         }
-        m.t[lane] = prim == kNoHit ? limit[lane] : travelled + t;
-        m.prim[lane] = prim;
+        const Vec3Lanes<T> origin = offset_origin(p, beyond);
+        travelled = select(hole, travelled + dot(origin - ray.origin, ray.direction), travelled);
+        ray.origin = select(hole, origin, ray.origin);
+        const HitLanes<T> next = closest_hits_within(mesh, ray, hole, select(hole, limit - travelled, splat(T(0))));
+        m.t = select(hole, next.t, m.t);
+        m.prim = select(hole, next.prim, m.prim);
+        open = hole & (next.prim != kNoHit);
     }
+    const LaneInts<T> hit = active & (m.prim != kNoHit);
+    m.t = select(hit, travelled + m.t, m.t);
     return m;
 }
 

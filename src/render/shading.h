@@ -242,13 +242,8 @@ private:
         const Texture& texture = scene_.textures[size_t(m.texture)];
         Lanes<T> u, v;
         mesh.uv_at(prim, point, u, v);
-        for (int lane = 0; lane < kLanes<T>; ++lane) {
-            if (!lanes[lane]) continue;
-            const std::array<float, 4> c = texture.sample(double(u[lane]), double(v[lane]));
-            albedo.x[lane] = T(c[0]);
-            albedo.y[lane] = T(c[1]);
-            albedo.z[lane] = T(c[2]);
-        }
+        const TexelLanes<T> c = texture.sample<T>(u, v);
+        albedo = {c.r, c.g, c.b};
         put(s.albedo, albedo, lanes, first);
         put(ambient, ColorLanes<T>{albedo.x * m.ambient.x, albedo.y * m.ambient.y, albedo.z * m.ambient.z} + m.emissive,
             lanes, first);

@@ -36,18 +36,60 @@ extern const std::array<float, 256> kSrgbToLinear;
 // mode: repeat tiles, mirrored_repeat tiles with every other copy flipped,
 // clamp_to_edge repeats the edge texel.
 inline int wrap_texel(long i, int n, Wrap wrap) {
+    const long period = wrap == Wrap::mirrored_repeat ? 2L * n : n;
+    long m = i % period;
+    if (m < 0) m += period;
     switch (wrap) {
     case Wrap::clamp_to_edge: return int(i < 0 ? 0 : i >= n ? n - 1 : i);
-    case Wrap::repeat: {
-        const long m = i % n;
-        return int(m < 0 ? m + n : m);
+    case Wrap::repeat: return int(m);
+    default: return int(m < n ? m : 2L * n - 1 - m);
     }
-    default: {
-        long m = i % (2L * n);
-        if (m < 0) m += 2L * n;
-        return int(m < n ? m : 2L * n - 1 - m);
+}
+
+// Linear colour and alpha in each lane of a packet.
+template <typename T>
+struct TexelLanes {
+    Lanes<T> r, g, b, a;
+};
+
+// Per lane: floor(x), x being within a few periods of [0, n] (no overflow).
+template <typename T>
+FH_HOT_INLINE Lanes<T> floor_lanes(const Lanes<T>& x) {
+    Lanes<T> r = x;  // overwritten lane by lane (one vroundps/pd once inlined)
+    for (int i = 0; i < kLanes<T>; ++i) r[i] = std::floor(x[i]);
+    return r;
+}
+
+// wrap_texel of the lanes' texels i = floor(x) and i + 1 (bilinear
+// filtering's neighbours), and x's fraction f past i. The period is taken
+// off in T first, so the integers stay small; whatever rounding leaves, the
+// indices end clamped into [0, n): never a read outside the image.
+template <typename T>
+FH_HOT_INLINE void texel_pair(Lanes<T> x, int n, Wrap wrap, LaneInts<T>& i, LaneInts<T>& next, Lanes<T>& f) {
+    using Ints = LaneInts<T>;
+    using Int = typename LaneTypes<T>::Int;
+    // NaN, infinities and absurd coordinates read texel 0's neighbourhood.
+    x = select(abs(x) < T(1e15), x, splat(T(0)));
+    const T period = wrap == Wrap::mirrored_repeat ? T(2) * T(n) : T(n);
+    if (wrap == Wrap::clamp_to_edge) x = max(splat(T(-1)), min(splat(T(n)), x));
+    else x -= period * floor_lanes<T>(x * (T(1) / period));
+    const Lanes<T> whole = floor_lanes<T>(x);
+    f = x - whole;
+    i = __builtin_convertvector(whole, Ints);
+    next = i + 1;
+    if (wrap != Wrap::clamp_to_edge) {  // i in [0, period] to rounding: bring it and next into [0, period)
+        const Ints p = Ints{} + Int(period);
+        i = select(i >= p, i - p, select(i < 0, i + p, i));
+        next = select(next >= p, next - p, next);
     }
+    if (wrap == Wrap::mirrored_repeat) {  // the second half of a period runs backwards
+        const Ints top = Ints{} + Int(2 * n - 1), half = Ints{} + Int(n);
+        i = select(i >= half, top - i, i);
+        next = select(next >= half, top - next, next);
     }
+    const Ints zero = Ints{}, last = Ints{} + Int(n - 1);
+    i = max(zero, min(last, i));
+    next = max(zero, min(last, next));
 }
 
 struct Texture {
@@ -55,39 +97,57 @@ struct Texture {
     Wrap wrap_s = Wrap::repeat, wrap_t = Wrap::repeat;  // along u, along v
     Filter filter = Filter::bilinear;
 
-    // Linear red, green, blue and alpha at (u, v). Coordinates past what a
-    // long holds (or NaN) read texel 0's row or column: never undefined.
-    FH_HOT_INLINE std::array<float, 4> sample(double u, double v) const {
+    // Linear colour and alpha at each lane's (u, v). Coordinates turn into
+    // texels in T, all lanes at once; then each lane reads its texels.
+    template <typename T>
+    FH_HOT_INLINE TexelLanes<T> sample(const Lanes<T>& u, const Lanes<T>& v) const {
         const int w = image->width, h = image->height;
-        double x = u * w, y = v * h;
-        if (filter == Filter::nearest) return texel(wrap_texel(whole(x), w, wrap_s), wrap_texel(whole(y), h, wrap_t));
-        // Texel centres sit at half-integers: blend the four around (x, y).
-        x -= 0.5;
-        y -= 0.5;
-        const long x0 = whole(x), y0 = whole(y);
-        const float fx = float(x - double(x0)), fy = float(y - double(y0));
-        const int i0 = wrap_texel(x0, w, wrap_s), i1 = wrap_texel(x0 + 1, w, wrap_s);
-        const int j0 = wrap_texel(y0, h, wrap_t), j1 = wrap_texel(y0 + 1, h, wrap_t);
-        const std::array<float, 4> a = texel(i0, j0), b = texel(i1, j0), c = texel(i0, j1), d = texel(i1, j1);
-        std::array<float, 4> out;
-        for (int k = 0; k < 4; ++k) {
-            const float top = a[size_t(k)] + fx * (b[size_t(k)] - a[size_t(k)]);
-            const float bottom = c[size_t(k)] + fx * (d[size_t(k)] - c[size_t(k)]);
-            out[size_t(k)] = top + fy * (bottom - top);
+        const Lanes<T> shift = splat(filter == Filter::bilinear ? T(0.5) : T(0));  // texel centres at i + 1/2
+        LaneInts<T> i0, i1, j0, j1;
+        Lanes<T> fx, fy;
+        texel_pair<T>(u * T(w) - shift, w, wrap_s, i0, i1, fx);
+        texel_pair<T>(v * T(h) - shift, h, wrap_t, j0, j1, fy);
+        const LaneInts<T> row0 = j0 * w, row1 = j1 * w;
+        const Lanes<T> zero = splat(T(0));
+        TexelLanes<T> c00{zero, zero, zero, zero};
+        if (filter == Filter::nearest) {
+            read(row0 + i0, c00);
+            return c00;
         }
-        return out;
+        TexelLanes<T> c10 = c00, c01 = c00, c11 = c00;
+        read(row0 + i0, c00);
+        read(row0 + i1, c10);
+        read(row1 + i0, c01);
+        read(row1 + i1, c11);
+        auto blend = [&](const Lanes<T>& a, const Lanes<T>& b, const Lanes<T>& c, const Lanes<T>& d) {
+            const Lanes<T> top = a + fx * (b - a), bottom = c + fx * (d - c);
+            return top + fy * (bottom - top);
+        };
+        return {blend(c00.r, c10.r, c01.r, c11.r), blend(c00.g, c10.g, c01.g, c11.g),
+                blend(c00.b, c10.b, c01.b, c11.b), blend(c00.a, c10.a, c01.a, c11.a)};
     }
 
-    // Texel (i, j) of the image, linear.
-    FH_HOT_INLINE std::array<float, 4> texel(int i, int j) const {
-        const std::uint8_t* p = &image->rgba[4 * (size_t(j) * size_t(image->width) + size_t(i))];
-        return {kSrgbToLinear[p[0]], kSrgbToLinear[p[1]], kSrgbToLinear[p[2]], float(p[3]) * (1.0f / 255)};
+    // One point (tests, cutouts): the packet formula in a packet of one.
+    std::array<float, 4> sample(double u, double v) const {
+        const TexelLanes<double> c = sample<double>(splat(u), splat(v));
+        return {float(c.r[0]), float(c.g[0]), float(c.b[0]), float(c.a[0])};
     }
 
 private:
-    // floor(x) as a long; 0 for NaN and for |x| past 2^52 (where no
-    // fraction is left to read anyway).
-    static long whole(double x) { return std::fabs(x) < 0x1p52 ? long(std::floor(x)) : 0; }
+    // Texels `index` (row * width + column) of every lane, linear: all
+    // lanes, which is faster than testing each (texel_pair keeps every
+    // index inside the image, used or not).
+    template <typename T>
+    FH_HOT_INLINE void read(const LaneInts<T>& index, TexelLanes<T>& out) const {
+        const std::uint8_t* rgba = image->rgba.data();
+        for (int k = 0; k < kLanes<T>; ++k) {
+            const std::uint8_t* p = rgba + 4 * size_t(index[k]);
+            out.r[k] = T(kSrgbToLinear[p[0]]);
+            out.g[k] = T(kSrgbToLinear[p[1]]);
+            out.b[k] = T(kSrgbToLinear[p[2]]);
+            out.a[k] = T(p[3]) * T(1.0 / 255);
+        }
+    }
 };
 
 }  // namespace fh
