@@ -72,7 +72,10 @@ int run_info(const Args& args) {
         for (const std::string& a : animations) std::cout << " '" << a << "'";
         size_t skinned = 0, morphed = 0;  // meshes a node deforms (scene/deformation.h)
         for (const Deformation& d : m.scene.deformations) skinned += d.skin.weights != nullptr, morphed += d.targets != nullptr;
-        std::cout << "\nskinned_meshes: " << skinned << "\nmorphed_meshes: " << morphed << "\n";
+        size_t cutouts = 0;
+        for (const Material<double>& mat : m.scene.materials) cutouts += mat.cutout;
+        std::cout << "\nskinned_meshes: " << skinned << "\nmorphed_meshes: " << morphed
+                  << "\ntextures: " << m.scene.textures.size() << "\ncutout_materials: " << cutouts << "\n";
         print_scene(m.scene, m.settings);
         return 0;
     }

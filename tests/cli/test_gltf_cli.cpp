@@ -220,7 +220,16 @@ TEST(GltfCli, ExportOfDebiansSkinByHand) {
     for (const auto& [at, p] : want)
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(v[at][k], p[k], 1e-6) << "vertex " << at << " axis " << k;
     const auto info = run_firsthit("info /usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf");
-    EXPECT_NE(info.out.find("\nskinned_meshes: 1\nmorphed_meshes: 0\n"), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find("\nskinned_meshes: 1\nmorphed_meshes: 0\ntextures: 0\ncutout_materials: 0\n"),
+              std::string::npos)
+        << info.out;
+}
+
+// The demo's floor tiles and trellis: two textures, one of them cutting the
+// trellis out.
+TEST(GltfCli, InfoCountsTexturesAndCutouts) {
+    const auto info = run_firsthit("info " + source_path("animations/gltf/demo.gltf"));
+    EXPECT_NE(info.out.find("\ntextures: 2\ncutout_materials: 1\n"), std::string::npos) << info.out;
 }
 
 // Debian's AnimatedMorphCube.gltf at frame 60 (2 s, its key 60): weights
