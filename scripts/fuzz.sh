@@ -14,7 +14,7 @@ build=${FIRSTHIT_FUZZ_BUILD:-$here/build-fuzz}
 
 mkdir -p "$build/artifacts"
 if ! { cmake -S "$here" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
-         -DFIRSTHIT_FUZZ=ON &&
+         -DFIRSTHIT_FUZZ=ON -DFIRSTHIT_ARCH=x86-64-v2 &&
        cmake --build "$build" -j "$(nproc)" --target scene_fuzzer movie_fuzzer gltf_fuzzer mesh_fuzzer; } >"$build/build.log" 2>&1; then
   echo "fuzz: building the fuzzers failed; the end of $build/build.log:" >&2
   tail -n 40 "$build/build.log" >&2

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine: installs what is missing (apt-get) and
-# configures and builds firsthit in build/ (Release, for this machine's CPU:
-# FIRSTHIT_ARCH=x86-64-v2 bash scripts/setup.sh builds one that runs on any
-# x86-64 CPU, e.g. for a cluster whose nodes differ).
+# configures and builds firsthit in build/ (Release): one binary that runs
+# on any x86-64 CPU at its widest SIMD (the tracer built for x86-64-v2, v3
+# and v4, chosen at start-up). FIRSTHIT_ARCH=host (or native, x86-64-vN)
+# bash scripts/setup.sh builds for one CPU only.
 #   bash scripts/setup.sh
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -29,6 +30,6 @@ if [[ ${#missing[@]} -gt 0 ]]; then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release -DFIRSTHIT_ARCH="${FIRSTHIT_ARCH:-host}" >/dev/null
+cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release -DFIRSTHIT_ARCH="${FIRSTHIT_ARCH:-dispatch}" >/dev/null
 cmake --build "$here/build" -j "$(nproc)"
 echo "setup: built $here/build/firsthit"

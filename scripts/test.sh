@@ -6,6 +6,14 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/scripts/setup.sh"
 cd "$here/build"
 ctest --output-on-failure -j "$(nproc)"
+# The same tests again through each lower x86-64 level this CPU runs, forced
+# (FIRSTHIT_ISA, src/render/levels.h): the one binary's copies of the tracer
+# for v2 and v3 (the Slurm and window tests, which render nothing new, once).
+widest=$(./firsthit --version | sed -n 's/.*tracing at x86-64-v\([0-9]\).*/\1/p')
+for ((level = 2; level < ${widest:-2}; level++)); do
+  echo "test: every test again at x86-64-v$level (FIRSTHIT_ISA=v$level)"
+  FIRSTHIT_ISA=v$level ctest --output-on-failure -j "$(nproc)" -E '^(slurm|view)\.' | tail -n 3
+done
 # ThreadSanitizer over the threaded tests and, built for AVX2, the tracer's
 # tests at that width; then the loaders' fuzzers
 # for 15 s each (each builds in its own folder: build-tsan, build-fuzz).

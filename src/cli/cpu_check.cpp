@@ -1,5 +1,6 @@
 // Before anything else runs: does this CPU have the instruction sets the
-// binary was built for (FIRSTHIT_ARCH)? A binary built with -march=native on
+// binary was built for (FIRSTHIT_ARCH: for the default, x86-64-v2, which
+// the start of the program needs before the tracer's level is chosen)? A binary built with -march=native on
 // a new cluster node and run on an older one would otherwise die of SIGILL
 // somewhere in the tracer. Built for plain x86-64 (CMakeLists.txt), and run
 // as a constructor of the highest priority, before other static initialisers
@@ -10,6 +11,9 @@
 
 #ifndef FIRSTHIT_CPU_NEEDS
 #define FIRSTHIT_CPU_NEEDS ""  // names, space-separated: what -march turned on
+#endif
+#ifndef FIRSTHIT_CPU_TARGET
+#define FIRSTHIT_CPU_TARGET "x86-64"  // that -march
 #endif
 
 namespace {
@@ -51,9 +55,10 @@ __attribute__((constructor(101))) void check_cpu() {
         needs += n + (needs[n] == ' ');
     }
     if (missing[0] == '\0') return;
-    say("firsthit: error: this binary was built for " FIRSTHIT_ARCH " but this CPU lacks");
+    say("firsthit: error: this binary was built for " FIRSTHIT_CPU_TARGET " but this CPU lacks");
     say(missing);
-    say("; rebuild it here, or for every node with cmake -DFIRSTHIT_ARCH=x86-64-v2 (SSE4.2: any x86-64 CPU since about 2009)\n");
+    say("; rebuild it here, or for every node with the default cmake -DFIRSTHIT_ARCH=dispatch (any x86-64 CPU since "
+        "about 2009, at its widest SIMD)\n");
     _exit(1);
 #endif
 }

@@ -12,6 +12,7 @@
 #include "yaml/movie_loader.h"
 #include "yaml/scene_loader.h"
 #include "pipeline/frame_files.h"
+#include "render/levels.h"
 
 namespace fh {
 
@@ -41,7 +42,8 @@ void print_scene(const Scene& s, const RenderSettings& settings) {
     for (const auto& c : s.cameras) std::cout << " " << c.name;
     std::cout << "\nsamples_per_pixel: " << settings.samples_per_pixel << "\n"
               << "max_depth: " << settings.max_depth << "\n"
-              << "effects: " << settings.effects.names() << "\n";
+              << "effects: " << settings.effects.names() << "\n"
+              << "tracer_level: " << level_in_use() << "\n";  // render/levels.h
 }
 
 

@@ -8,7 +8,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/flags.h"
-#include "core/simd.h"
+#include "render/levels.h"
 #include "text/input_error.h"
 
 namespace fh {
@@ -37,9 +37,19 @@ int dispatch(int argc, char** argv) {
         std::cout << overview_help() << "\n";
         return 0;
     }
+    // The tracer's level, chosen first: a FIRSTHIT_ISA this CPU or binary
+    // cannot honour is one line before any work.
+    std::string level;
+    try {
+        level = level_in_use();
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
     if (cmd == "--version") {
-        std::cout << "firsthit " << FIRSTHIT_VERSION << " (built for " << FIRSTHIT_ARCH << ": " << kSimdBytes
-                  << "-byte SIMD, " << kLanes<double> << " doubles or " << kLanes<float> << " floats a packet)\n";
+        const int bytes = 16 << (level.back() - '2');  // v2: 16, v3: 32, v4: 64
+        std::cout << "firsthit " << FIRSTHIT_VERSION << " (FIRSTHIT_ARCH=" << FIRSTHIT_ARCH << "; tracing at "
+                  << level << ": " << bytes << "-byte SIMD, " << bytes / 8 << " doubles or " << bytes / 4
+                  << " floats a packet)\n";
         return 0;
     }
     const CommandSpec* command = find_command(cmd);

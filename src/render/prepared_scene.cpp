@@ -1,9 +1,8 @@
 #include "render/prepared_scene.h"
 
 #include <chrono>
-#include <type_traits>
 
-#include "render/flat_scene.h"
+#include "render/levels.h"
 
 namespace fh {
 
@@ -18,11 +17,7 @@ double ms_since(std::chrono::steady_clock::time_point start) {
 PreparedScene::PreparedScene(const Scene& scene, const RenderSettings& settings, ThreadPool* pool)
     : settings_(settings) {
     const auto start = std::chrono::steady_clock::now();
-    const EffectPlan plan = plan_effects(scene, settings.effects, settings.max_depth, settings.prune);
-    if (settings.precision == Precision::float32)
-        float_ = std::make_unique<FlatScene<float>>(FlatScene<float>::build(scene, plan, pool));
-    else
-        double_ = std::make_unique<FlatScene<double>>(FlatScene<double>::build(scene, plan, pool));
+    tracer_ = prepare_tracer(scene, settings, pool);
     build_ms_ = ms_since(start);
 }
 
@@ -30,18 +25,7 @@ PreparedScene PreparedScene::for_frame(const Scene& frame, ShapeChanges moved, T
     const auto start = std::chrono::steady_clock::now();
     PreparedScene p;
     p.settings_ = settings_;
-    const EffectPlan plan = plan_effects(frame, settings_.effects, settings_.max_depth, settings_.prune);
-    auto next = [&](const auto& flat) {
-        using Flat = std::decay_t<decltype(*flat)>;
-        auto geometry = flat->geometry;
-        if (moved.world)
-            geometry = std::make_shared<const typename decltype(geometry)::element_type>(geometry->refit(frame, pool));
-        auto instances = flat->instances;
-        if (moved.instances && instances) instances = instances->moved(frame, pool);
-        return std::make_unique<Flat>(Flat::build(frame, plan, std::move(geometry), std::move(instances)));
-    };
-    if (float_) p.float_ = next(float_);
-    else p.double_ = next(double_);
+    p.tracer_ = tracer_->for_frame(frame, moved, pool);
     p.build_ms_ = ms_since(start);
     return p;
 }
@@ -51,26 +35,14 @@ PreparedScene::PreparedScene(PreparedScene&&) noexcept = default;
 PreparedScene& PreparedScene::operator=(PreparedScene&&) noexcept = default;
 
 FrameResult PreparedScene::render(const Camera& camera, ThreadPool* pool, const RenderSettings& sampling) const {
-    if (float_) return render_frame_as<float>(*float_, camera, sampling, pool);
-    return render_frame_as<double>(*double_, camera, sampling, pool);
+    return tracer_->render(camera, pool, sampling);
 }
 
-const EffectPlan& PreparedScene::plan() const { return float_ ? float_->plan : double_->plan; }
-double PreparedScene::bvh_build_ms() const {
-    return float_ ? float_->geometry->bvh.build_ms : double_->geometry->bvh.build_ms;
-}
-int PreparedScene::bvh_nodes() const {
-    return int(float_ ? float_->geometry->bvh.nodes.size() : double_->geometry->bvh.nodes.size());
-}
-
-size_t PreparedScene::instances() const {
-    if (float_) return float_->instances ? float_->instances->instances.size() : 0;
-    return double_->instances ? double_->instances->instances.size() : 0;
-}
-double PreparedScene::instances_update_ms() const {
-    if (float_) return float_->instances ? float_->instances->update_ms : 0;
-    return double_->instances ? double_->instances->update_ms : 0;
-}
+const EffectPlan& PreparedScene::plan() const { return tracer_->plan(); }
+double PreparedScene::bvh_build_ms() const { return tracer_->bvh_build_ms(); }
+int PreparedScene::bvh_nodes() const { return tracer_->bvh_nodes(); }
+size_t PreparedScene::instances() const { return tracer_->instances(); }
+double PreparedScene::instances_update_ms() const { return tracer_->instances_update_ms(); }
 
 FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,
                          ThreadPool* pool) {

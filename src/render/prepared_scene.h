@@ -5,22 +5,16 @@
 // materials change re-flattens only those (for_frame), one whose shapes
 // move refits the BVH of a copy of the shapes instead of building it anew,
 // and one whose instances move redoes only their matrices and top BVH.
+// The work is done by the tracer of the CPU's x86-64 level
+// (render/prepared_tracer.h, render/levels.h).
 #pragma once
 
 #include <memory>
 
+#include "render/prepared_tracer.h"
 #include "render/render.h"
 
 namespace fh {
-
-template <typename T>
-struct FlatScene;
-
-// What a frame moved, against the scene prepared.
-struct ShapeChanges {
-    bool world = false;      // spheres, planes or triangles: the world's BVH is refitted
-    bool instances = false;  // instances: their matrices and top BVH are redone
-};
 
 class PreparedScene {
 public:
@@ -58,8 +52,8 @@ private:
     PreparedScene() = default;
 
     RenderSettings settings_;
-    std::unique_ptr<FlatScene<float>> float_;
-    std::unique_ptr<FlatScene<double>> double_;
+    // The tracer of the x86-64 level in use (render/levels.h).
+    std::unique_ptr<PreparedTracer> tracer_;
     double build_ms_ = 0;
 };
 

@@ -108,17 +108,9 @@ struct Texture {
         texel_pair<T>(u * T(w) - shift, w, wrap_s, i0, i1, fx);
         texel_pair<T>(v * T(h) - shift, h, wrap_t, j0, j1, fy);
         const LaneInts<T> row0 = j0 * w, row1 = j1 * w;
-        const Lanes<T> zero = splat(T(0));
-        TexelLanes<T> c00{zero, zero, zero, zero};
-        if (filter == Filter::nearest) {
-            read(row0 + i0, c00);
-            return c00;
-        }
-        TexelLanes<T> c10 = c00, c01 = c00, c11 = c00;
-        read(row0 + i0, c00);
-        read(row0 + i1, c10);
-        read(row1 + i0, c01);
-        read(row1 + i1, c11);
+        if (filter == Filter::nearest) return read<T>(row0 + i0);
+        const TexelLanes<T> c00 = read<T>(row0 + i0), c10 = read<T>(row0 + i1);
+        const TexelLanes<T> c01 = read<T>(row1 + i0), c11 = read<T>(row1 + i1);
         auto blend = [&](const Lanes<T>& a, const Lanes<T>& b, const Lanes<T>& c, const Lanes<T>& d) {
             const Lanes<T> top = a + fx * (b - a), bottom = c + fx * (d - c);
             return top + fy * (bottom - top);
@@ -138,15 +130,17 @@ private:
     // lanes, which is faster than testing each (texel_pair keeps every
     // index inside the image, used or not).
     template <typename T>
-    FH_HOT_INLINE void read(const LaneInts<T>& index, TexelLanes<T>& out) const {
+    FH_HOT_INLINE TexelLanes<T> read(const LaneInts<T>& index) const {
         const std::uint8_t* rgba = image->rgba.data();
+        alignas(sizeof(Lanes<T>)) T r[kLanes<T>], g[kLanes<T>], b[kLanes<T>], a[kLanes<T>];
         for (int k = 0; k < kLanes<T>; ++k) {
             const std::uint8_t* p = rgba + 4 * size_t(index[k]);
-            out.r[k] = T(kSrgbToLinear[p[0]]);
-            out.g[k] = T(kSrgbToLinear[p[1]]);
-            out.b[k] = T(kSrgbToLinear[p[2]]);
-            out.a[k] = T(p[3]) * T(1.0 / 255);
+            r[k] = T(kSrgbToLinear[p[0]]);
+            g[k] = T(kSrgbToLinear[p[1]]);
+            b[k] = T(kSrgbToLinear[p[2]]);
+            a[k] = T(p[3]) * T(1.0 / 255);
         }
+        return {load(r), load(g), load(b), load(a)};
     }
 };
 

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "yaml/scene_loader.h"
+#include "render/levels.h"
 #include "render/render.h"
 #include "render/sampler.h"
 #include "render/shading.h"
@@ -42,6 +43,11 @@ Image one_ray_at_a_time(const Scene& scene, const Camera& camera, int spp) {
 
 template <typename T>
 void expect_same_as_one_ray_at_a_time(const Scene& scene, const Camera& camera, int spp) {
+    // render_frame runs the tracer of the level FIRSTHIT_ISA picks; the one
+    // ray at a time, this binary's own copy (FIRSTHIT_TRACER_LEVEL). In
+    // float they agree only at the same level: FMA (v3, v4) rounds once
+    // where v2 rounds twice. Double agrees at every level.
+    if (std::is_same_v<T, float> && level_in_use() != "x86-64-v" + std::to_string(FIRSTHIT_TRACER_LEVEL)) return;
     RenderSettings settings;
     settings.samples_per_pixel = spp;
     settings.precision = std::is_same_v<T, float> ? Precision::float32 : Precision::float64;
