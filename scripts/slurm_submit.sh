@@ -13,8 +13,8 @@
 # jobs' logs to OUT_DIR.logs/. MOVIE, its scene, OUT_DIR and the firsthit
 # binary (env FIRSTHIT, default build/firsthit next to this script) must be
 # on storage every node sees, at the same paths; ffmpeg must be on the node
-# that encodes. Where the nodes' CPUs differ, build the binary for all of
-# them: FIRSTHIT_ARCH=x86-64-v2 bash scripts/setup.sh. Extra arguments go to
+# that encodes. The default build (bash scripts/setup.sh) runs on every
+# x86-64 node at that node's widest SIMD, whatever the mix. Extra arguments go to
 # both sbatch calls (e.g. --partition=render --cpus-per-task=8 --time=1:00:00).
 #
 # Every task is idempotent: a task that is requeued (node failure, preemption,

@@ -9,7 +9,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${FIRSTHIT_TSAN_BUILD:-$here/build-tsan}
-flags="-fsanitize=thread -fno-omit-frame-pointer"
+flags="-fsanitize=thread -fno-omit-frame-pointer -DFIRSTHIT_NO_FORCED_INLINE"  # src/core/vec.h
 
 mkdir -p "$build"
 if ! { cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DFIRSTHIT_ARCH=x86-64-v3 \

@@ -18,6 +18,10 @@
 // once per primitive a packet sees -- mostly one or two -- and blended into
 // the lanes that hit it.
 //
+// A textured material (glTF's base colour texture: only instances have one)
+// multiplies its ambient and diffuse colours by the texel colour at each
+// hit (SurfaceLanes::albedo); scenes without textures never read it.
+//
 // F (ShaderFeature bits) fixes at compile time whether shadow rays, the
 // specular term and glazing exist at all; with_shader picks the variant the
 // frame's effect plan calls for. kInstances: the scene has instances (the
