@@ -4,9 +4,9 @@
 // behind and shadow rays let light through: a leaf casts a leaf's shadow.
 //
 // Only instances have cutouts (glTF meshes are instances): the walk of a
-// cut-out instance's mesh is followed by past_cutouts, which takes each ray
-// whose nearest hit is a hole on from just past it, one ray at a time, until
-// a solid point or nothing. The walks of every other mesh are unchanged.
+// cut-out instance's mesh is followed by past_cutouts, which takes the rays
+// whose nearest hits are holes on from just past them, together, until each
+// meets a solid point or nothing. The walks of every other mesh are unchanged.
 #pragma once
 
 #include "core/offset.h"

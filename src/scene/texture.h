@@ -34,7 +34,9 @@ extern const std::array<float, 256> kSrgbToLinear;
 
 // One texel index along an axis of n texels, for any whole i, by the wrap
 // mode: repeat tiles, mirrored_repeat tiles with every other copy flipped,
-// clamp_to_edge repeats the edge texel.
+// clamp_to_edge repeats the edge texel. The rule in plain integers;
+// texel_pair below does the same for every lane at once (the tests hold
+// each to it).
 inline int wrap_texel(long i, int n, Wrap wrap) {
     const long period = wrap == Wrap::mirrored_repeat ? 2L * n : n;
     long m = i % period;
@@ -52,7 +54,7 @@ struct TexelLanes {
     Lanes<T> r, g, b, a;
 };
 
-// Per lane: floor(x), x being within a few periods of [0, n] (no overflow).
+// Per lane: floor(x).
 template <typename T>
 FH_HOT_INLINE Lanes<T> floor_lanes(const Lanes<T>& x) {
     Lanes<T> r = x;  // overwritten lane by lane (one vroundps/pd once inlined)
