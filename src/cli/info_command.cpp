@@ -43,7 +43,7 @@ void print_scene(const Scene& s, const RenderSettings& settings) {
     std::cout << "\nsamples_per_pixel: " << settings.samples_per_pixel << "\n"
               << "max_depth: " << settings.max_depth << "\n"
               << "effects: " << settings.effects.names() << "\n"
-              << "tracer_level: " << level_in_use() << "\n";  // render/levels.h
+              << "tracer_level: " << level_name(level_in_use()) << "\n";  // render/levels.h
 }
 
 

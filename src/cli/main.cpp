@@ -39,17 +39,17 @@ int dispatch(int argc, char** argv) {
     }
     // The tracer's level, chosen first: a FIRSTHIT_ISA this CPU or binary
     // cannot honour is one line before any work.
-    std::string level;
+    int level = 0;
     try {
         level = level_in_use();
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
     if (cmd == "--version") {
-        const int bytes = 16 << (level.back() - '2');  // v2: 16, v3: 32, v4: 64
+        const int bytes = 16 << (level - 2);  // v2: 16, v3: 32, v4: 64
         std::cout << "firsthit " << FIRSTHIT_VERSION << " (FIRSTHIT_ARCH=" << FIRSTHIT_ARCH << "; tracing at "
-                  << level << ": " << bytes << "-byte SIMD, " << bytes / 8 << " doubles or " << bytes / 4
-                  << " floats a packet)\n";
+                  << level_name(level) << ": " << bytes << "-byte SIMD, " << bytes / 8 << " doubles or "
+                  << bytes / 4 << " floats a packet)\n";
         return 0;
     }
     const CommandSpec* command = find_command(cmd);

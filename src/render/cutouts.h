@@ -26,10 +26,9 @@ struct Cutout {
     float alpha = 1;
     float cutoff = 0.5f;
 
-    // Per lane of `lanes`: the surface is there at (u, v).
+    // Per lane of `lanes`: the surface is there at (u, v) (texture.image set).
     template <typename T>
     FH_HOT_INLINE LaneInts<T> solid(const Lanes<T>& u, const Lanes<T>& v, const LaneInts<T>& lanes) const {
-        if (!texture.image) return alpha >= cutoff ? lanes : LaneInts<T>{};
         return lanes & (T(alpha) * texture.sample<T>(u, v).a >= T(cutoff));
     }
 };

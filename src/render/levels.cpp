@@ -36,17 +36,9 @@ PrepareTracer entry(int level) {
     }
 }
 
-std::string name(int level) { return "x86-64-v" + std::to_string(level); }
-
 // What each level needs beyond the one below, as the CPU is asked.
 const char* missing_for(int level) {
     return level == 4 ? "AVX-512 (avx512f, bw, cd, dq, vl)" : level == 3 ? "AVX2, FMA, BMI1 and BMI2" : "SSE4.2 and POPCNT";
-}
-
-// FIRSTHIT_ISA's level, or the widest.
-int chosen_level() {
-    const char* requested = std::getenv("FIRSTHIT_ISA");
-    return choose_level(requested ? requested : "", cpu_level(), compiled_levels());
 }
 
 }  // namespace
@@ -82,7 +74,7 @@ int choose_level(const std::string& requested, int cpu, const std::vector<int>& 
     }
     int level = 0;
     for (int l = 2; l <= 4; ++l)
-        if (requested == "v" + std::to_string(l) || requested == name(l)) level = l;
+        if (requested == "v" + std::to_string(l) || requested == level_name(l)) level = l;
     if (level == 0)
         throw std::invalid_argument("FIRSTHIT_ISA=" + requested + ": not an x86-64 level (v2, v3 or v4)");
     if (!holds(level))
@@ -104,11 +96,20 @@ const std::vector<int>& compiled_levels() {
     return levels;
 }
 
-std::string level_in_use() { return name(chosen_level()); }
+std::string level_name(int level) { return "x86-64-v" + std::to_string(level); }
+
+int level_in_use() {
+    // FIRSTHIT_ISA's level, or the widest. (A throw leaves it unset: the
+    // next call asks again, and throws again.)
+    static const int level = [] {
+        const char* requested = std::getenv("FIRSTHIT_ISA");
+        return choose_level(requested ? requested : "", cpu_level(), compiled_levels());
+    }();
+    return level;
+}
 
 std::unique_ptr<PreparedTracer> prepare_tracer(const Scene& scene, const RenderSettings& settings, ThreadPool* pool) {
-    static const PrepareTracer prepare = entry(chosen_level());
-    return std::unique_ptr<PreparedTracer>(prepare(scene, settings, pool));
+    return std::unique_ptr<PreparedTracer>(entry(level_in_use())(scene, settings, pool));
 }
 
 }  // namespace fh

@@ -31,10 +31,13 @@ int choose_level(const std::string& requested, int cpu, const std::vector<int>& 
 // The levels this binary holds a tracer for.
 const std::vector<int>& compiled_levels();
 
-// The level in use, chosen once (FIRSTHIT_ISA, the CPU): e.g. "x86-64-v4".
+// The level in use (2, 3 or 4), chosen once (FIRSTHIT_ISA, the CPU).
 // Throws as choose_level does; the command line asks for it first thing,
 // so a bad FIRSTHIT_ISA is one line before any work.
-std::string level_in_use();
+int level_in_use();
+
+// A level as people name it: "x86-64-v4".
+std::string level_name(int level);
 
 // `scene` prepared by the tracer of the level in use.
 std::unique_ptr<PreparedTracer> prepare_tracer(const Scene& scene, const RenderSettings& settings, ThreadPool* pool);

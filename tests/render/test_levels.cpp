@@ -57,10 +57,10 @@ TEST(Levels, ALevelTheBinaryDoesNotHoldOrNoLevelAtAllIsRefused) {
 TEST(Levels, TheCommandLineNamesTheLevelInUse) {
     const auto version = test::run_firsthit("--version");
     ASSERT_EQ(version.status, 0) << version.err;
-    EXPECT_NE(version.out.find("tracing at " + level_in_use() + ": "), std::string::npos) << version.out;
+    EXPECT_NE(version.out.find("tracing at " + level_name(level_in_use()) + ": "), std::string::npos) << version.out;
     for (const int level : compiled_levels()) {
         if (level > cpu_level()) continue;
-        const std::string name = "x86-64-v" + std::to_string(level);
+        const std::string name = level_name(level);
         const auto forced = test::run_shell("FIRSTHIT_ISA=v" + std::to_string(level) + " " + FIRSTHIT_BINARY +
                                             " info " + FIRSTHIT_SOURCE_DIR + "/animations/movie1.yaml");
         ASSERT_EQ(forced.status, 0) << forced.err;
