@@ -72,9 +72,15 @@ private:
     std::vector<FrustumSide> columns_, rows_;  // facing increasing x, y
 };
 
+// Above this many primitives a BVH is not walked with a tile's frustum.
+// Measured on icospheres (bench_scaling, float, 2 threads): culling made
+// 320 triangles 2% faster and 1,280 1% slower.
+inline constexpr int kMaxCulledPrimitives = 1024;
+
 // The shapes and triangles of `geometry` the frustum may hit, by id, into `out`: found
-// by walking the BVH with the frustum; more than kMaxSubset of them and
-// `out` says to walk the BVH per packet instead.
+// by walking the BVH with the frustum; more than kMaxSubset of them (or a
+// tree of more than kMaxCulledPrimitives whose root box the frustum meets)
+// and `out` says to walk the BVH per packet instead.
 template <typename T>
 void cull_to_frustum(const FlatGeometry<T>& geometry, const TileFrustum& frustum, PrimitiveSubset& out);
 

@@ -163,7 +163,8 @@ TEST(TileCulling, KeepsEveryTriangleAndBoxATilesRayHits) {
 // Culling a scene over every tile of an image lists exactly the triangles
 // the frustum keeps, one by one; it gives up (walk the BVH) only when they
 // are more than kMaxSubset -- including where it gives up early, at a node
-// wholly inside the frustum.
+// wholly inside the frustum. A tree of more than kMaxCulledPrimitives is
+// walked wherever the frustum meets its root box, and skipped elsewhere.
 template <typename T>
 void check_culling(int subdivisions, int* gave_up, int* listed) {
     Scene s;
@@ -187,6 +188,17 @@ void check_culling(int subdivisions, int* gave_up, int* listed) {
                 if (frustum.may_hit(dvec3(t.v0), dvec3(t.v1), dvec3(t.v2))) kept.push_back(i);
             }
             cull_to_frustum(g, frustum, out);
+            if (g.bvh.nodes[0].below > kMaxCulledPrimitives) {
+                // A big tree: only its root box is tested.
+                const BvhNode& root = g.bvh.nodes[0];
+                const bool meets = frustum.overlap(dvec3(root.lo[0], root.lo[1], root.lo[2]),
+                                                   dvec3(root.hi[0], root.hi[1], root.hi[2])) !=
+                                   TileFrustum::Overlap::outside;
+                EXPECT_EQ(out.walk_bvh, meets) << "tile " << x0 << ", " << y0;
+                if (!meets) EXPECT_TRUE(kept.empty()) << "tile " << x0 << ", " << y0;
+                *gave_up += out.walk_bvh;
+                continue;
+            }
             if (out.walk_bvh) {
                 ++*gave_up;
                 EXPECT_GT(kept.size(), kMaxSubset) << "tile " << x0 << ", " << y0;
@@ -198,6 +210,7 @@ void check_culling(int subdivisions, int* gave_up, int* listed) {
 }
 
 TEST(TileCulling, ListsWhatTheFrustumKeepsOrGivesUpOnlyWhenTooMany) {
+    static_assert(kMaxCulledPrimitives >= 320 && kMaxCulledPrimitives < 20480);
     for (const int subdivisions : {2, 5}) {  // 320 triangles, each over several tiles; 20,480, many in each
         int gave_up = 0, listed = 0;
         check_culling<double>(subdivisions, &gave_up, &listed);
