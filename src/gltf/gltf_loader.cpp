@@ -566,7 +566,9 @@ private:
             spot.intensity = intensity;
             spot.node = node;
             spot.max_angle = l.type == "point" ? kInfinity<double> : l.spot.outerConeAngle;
-            if (!(spot.max_angle > 0)) fail(name + ": outerConeAngle must be > 0");
+            // (0, pi/2] by the extension; pi/2 as a float rounds a little past it.
+            if (!(spot.max_angle > 0) || (l.type == "spot" && spot.max_angle > 1.5707964))
+                fail(name + ": outerConeAngle must be in (0, pi/2]");
             s.spot_lights.push_back(spot);
         } else {
             fail(name + ": light type '" + l.type + "' is not directional, point or spot");

@@ -187,8 +187,10 @@ std::uint32_t u32(const std::string& b, size_t at) {
 std::string glb_json(const std::string& bytes, const std::string& file) {
     if (bytes.size() < 20) throw InputError(file, "GLB file cut short: " + std::to_string(bytes.size()) + " bytes");
     if (u32(bytes, 4) != 2) throw InputError(file, "GLB version " + std::to_string(u32(bytes, 4)) + " (glTF 2.0 is version 2)");
+    // The header's length is the whole file's (glTF 2.0, 4.4.2): shorter
+    // means bytes after the last chunk, which no reader should guess about.
     const std::uint64_t length = u32(bytes, 8);
-    if (length > bytes.size())
+    if (length != bytes.size())
         throw InputError(file, "GLB header says " + std::to_string(length) + " bytes, the file has " +
                                    std::to_string(bytes.size()));
     const std::uint64_t json_length = u32(bytes, 12);

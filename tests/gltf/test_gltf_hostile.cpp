@@ -235,14 +235,37 @@ TEST(GltfHostile, GlbChunkRunningPastTheFile) {
     refused(g, "GLB's binary chunk of 40 bytes runs past the file (" + std::to_string(size) + " bytes)");
 }
 
-TEST(GltfHostile, GlbHeaderLengthPastTheFile) {
+TEST(GltfHostile, GlbHeaderLengthOtherThanTheFiles) {
     std::string g = triangle_glb();
     const size_t size = g.size();
     set_u32(g, 8, std::uint32_t(size + 4));
     refused(g, "GLB header says " + std::to_string(size + 4) + " bytes, the file has " + std::to_string(size));
+    // Bytes after the last chunk.
+    refused(triangle_glb() + std::string(4, '\0'),
+            "GLB header says " + std::to_string(size) + " bytes, the file has " + std::to_string(size + 4));
     // Cut short: the header's length no longer there.
     refused(triangle_glb().substr(0, size - 8),
             "GLB header says " + std::to_string(size) + " bytes, the file has " + std::to_string(size - 8));
+}
+
+// ----------------------------------------------------------------- lights
+
+TEST(GltfHostile, LightValuesOutOfRange) {
+    auto with_light = [](const std::string& light) {
+        return gltf_json(R"("extensionsUsed": ["KHR_lights_punctual"],
+            "extensions": {"KHR_lights_punctual": {"lights": [)" + light + R"(]}},
+            "scenes": [{"nodes": [0]}], "nodes": [{"extensions": {"KHR_lights_punctual": {"light": 0}}}])");
+    };
+    refused(with_light(R"({"type": "point", "intensity": -1})"), "light 0: intensity must be >= 0");
+    refused(with_light(R"({"type": "spot", "spot": {"outerConeAngle": 0}})"),
+            "light 0: outerConeAngle must be in (0, pi/2]");
+    refused(with_light(R"({"type": "spot", "name": "wide", "spot": {"outerConeAngle": 1.6}})"),
+            "wide: outerConeAngle must be in (0, pi/2]");
+    // pi/2 as a float (1.5707963705...) is the widest cone the extension allows.
+    const GltfFile f = load_gltf_from_memory(with_light(R"({"type": "spot", "spot": {"outerConeAngle": 1.5707963705062866}})"),
+                                             "ok.gltf", "/nonexistent-folder");
+    ASSERT_EQ(f.scene.spot_lights.size(), 1u);
+    EXPECT_DOUBLE_EQ(f.scene.spot_lights[0].max_angle, 1.5707963705062866);
 }
 
 // ------------------------------------------------------------------- uris
