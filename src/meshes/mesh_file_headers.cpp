@@ -46,6 +46,17 @@ bool parse_count(const std::string& word, std::uint64_t& value) {
     return ec == std::errc() && ptr == end && !word.empty();
 }
 
+// A PLY element's count as assimp 5.2.5 reads it (strtoul10): the leading
+// digits, in 32 bits that wrap, whatever follows them; 0 without any.
+std::uint64_t ply_count(const std::string& word) {
+    std::uint32_t value = 0;
+    for (const char c : word) {
+        if (c < '0' || c > '9') break;
+        value = value * 10 + std::uint32_t(c - '0');
+    }
+    return value;
+}
+
 // Bytes of one binary PLY value of `type` (1 for a name assimp will reject).
 std::uint64_t ply_type_bytes(const std::string& type) {
     if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
@@ -96,11 +107,11 @@ bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
             binary = starts_with(name, "binary");
         } else if (word == "element") {
             words >> name >> count;
-            Element e{name, 0, 0};
-            // A count we cannot read is assimp's to report; the element
-            // counts as none, and the others are still checked (fuzzing
-            // found a 4-billion-vertex header hidden behind a garbled one).
-            if (!parse_count(count, e.count)) e.count = 0;
+            // Read as assimp will, garbled or not: fuzzing found a
+            // 4-billion-vertex header hidden behind a garbled count, and one
+            // whose count ran into the next line's word
+            // ("42949672954\bproperty", 4,294,967,290 to assimp).
+            Element e{name, ply_count(count), 0};
             elements.push_back(e);
         } else if (word == "property" && !elements.empty()) {
             words >> name;  // the type; for a list, the type of its length

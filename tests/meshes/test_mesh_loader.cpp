@@ -451,6 +451,20 @@ TEST(MeshLoaderErrors, HugeAsciiPlyCountBehindAGarbledElement) {
               "17179869179 bytes of data) but only 20 bytes follow it: a truncated file?");
 }
 
+TEST(MeshLoaderErrors, PlyCountRunningIntoTheNextWord) {
+    // Found by fuzz/mesh_fuzzer.cpp: a count glued to the next line by a
+    // control character, which assimp reads as its leading digits (wrapped
+    // to 32 bits) and then loops over for minutes.
+    const std::string ply =
+        "ply\nformat ascii 1.0\nelement vertex 42949672954\bproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    // 42,949,672,954 mod 2^32 vertices of two ASCII values (x is glued into
+    // the element's line), one face: 4,294,967,290 x 4 + 2 - 1 bytes at least.
+    EXPECT_EQ(mesh_error("glued.ply", ply),
+              "FILE: error: the PLY header declares element vertex 4294967290, element face 1 (at least "
+              "17179869161 bytes of data) but only 26 bytes follow it: a truncated file?");
+}
+
 TEST(MeshLoaderErrors, TruncatedOff) {
     const std::string off = cube_off();
     // assimp only logs it, and keeps faces without indices.
