@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -38,12 +37,6 @@ std::uint64_t saturating_add(std::uint64_t a, std::uint64_t b) {
 std::uint64_t saturating_mul(std::uint64_t a, std::uint64_t b) {
     std::uint64_t r;
     return __builtin_mul_overflow(a, b, &r) ? std::numeric_limits<std::uint64_t>::max() : r;
-}
-
-bool parse_count(const std::string& word, std::uint64_t& value) {
-    const char* end = word.data() + word.size();
-    const auto [ptr, ec] = std::from_chars(word.data(), end, value);
-    return ec == std::errc() && ptr == end && !word.empty();
 }
 
 // A PLY element's count as assimp 5.2.5 reads it (strtoul10): the leading
@@ -140,38 +133,56 @@ bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
 }
 
 // The OFF header's vertex and face counts against the file's size: a vertex
-// takes at least two bytes per coordinate ("0 "), a face two.
+// takes at least two bytes per coordinate ("0 "), a face two. The header is
+// read as assimp 5.2.5's OFF reader reads it, so that the counts checked are
+// the counts it will allocate: optional ST, C, N, 4 and n before "OFF"
+// (which may be missing, and may have the counts right after it, with no
+// space: fuzzing found "OFF5555...551 4"), nOFF's dimension first, each
+// count its leading digits in 32 bits that wrap; comment lines skipped.
 void check_off_header(const std::string& path, std::uintmax_t file_size) {
     const std::string head = read_head(path, std::size_t(1) << 16);
-    // The first tokens, without # comments, and where each ends.
-    std::vector<std::pair<std::string, std::size_t>> tokens;
-    for (std::size_t i = 0; i < head.size() && tokens.size() < 5;) {
-        const auto c = static_cast<unsigned char>(head[i]);
-        if (c == '#') {
-            while (i < head.size() && head[i] != '\n') ++i;
-        } else if (std::isspace(c)) {
-            ++i;
-        } else {
-            const std::size_t start = i;
-            while (i < head.size() && !std::isspace(static_cast<unsigned char>(head[i])) && head[i] != '#') ++i;
-            tokens.emplace_back(head.substr(start, i - start), i);
+    std::size_t at = 0;
+    auto next_token = [&] {  // assimp's NextToken: blanks, line ends and # lines
+        for (;;) {
+            while (at < head.size() && (head[at] == ' ' || head[at] == '\t' || head[at] == '\r' || head[at] == '\n' ||
+                                        head[at] == '\f' || head[at] == '\0'))
+                ++at;
+            if (at >= head.size() || head[at] != '#') return;
+            while (at < head.size() && head[at] != '\n') ++at;
         }
+    };
+    auto starts = [&](const char* word) { return head.compare(at, std::strlen(word), word) == 0; };
+    auto count = [&] {  // assimp's strtoul10
+        std::uint32_t value = 0;
+        for (; at < head.size() && head[at] >= '0' && head[at] <= '9'; ++at) value = value * 10 + std::uint32_t(head[at] - '0');
+        return std::uint64_t(value);
+    };
+    next_token();
+    if (starts("ST")) at += 2;
+    if (starts("C")) ++at;
+    if (starts("N")) ++at;
+    if (starts("4")) ++at;
+    const bool has_dimension = starts("n");
+    if (has_dimension) ++at;
+    if (starts("OFF")) {
+        at += 3;
+        next_token();
+    } else {
+        next_token();
+        if (at >= head.size() || head[at] < '0' || head[at] > '9') return;  // assimp's to report
     }
-    std::size_t next = 0;
     std::uint64_t dimensions = 3;
-    if (!tokens.empty() && tokens[0].first.size() >= 3 &&
-        tokens[0].first.compare(tokens[0].first.size() - 3, 3, "OFF") == 0) {
-        ++next;
-        if (contains(tokens[0].first, "n")) {  // nOFF: the dimension comes first
-            if (next >= tokens.size() || !parse_count(tokens[next].first, dimensions)) return;
-            ++next;
-        }
+    if (has_dimension) {
+        dimensions = count();
+        next_token();
     }
-    std::uint64_t vertices = 0, faces = 0;
-    if (next + 1 >= tokens.size() || !parse_count(tokens[next].first, vertices) ||
-        !parse_count(tokens[next + 1].first, faces))
-        return;  // assimp's to report
-    const std::uint64_t rest = file_size - std::min<std::uintmax_t>(tokens[next + 1].second, file_size);
+    if (dimensions > 3) return;  // assimp's to report
+    next_token();
+    const std::uint64_t vertices = count();
+    next_token();
+    const std::uint64_t faces = count();
+    if (vertices == 0 || faces == 0) return;  // assimp's to report ("no valid vertices/faces")
+    const std::uint64_t rest = file_size - std::min<std::uintmax_t>(at, file_size);
     std::uint64_t needed = saturating_add(saturating_mul(vertices, 2 * std::max<std::uint64_t>(dimensions, 1)),
                                           saturating_mul(faces, 2));
     if (needed > 0) --needed;  // the last line's newline may be missing

@@ -465,6 +465,31 @@ TEST(MeshLoaderErrors, PlyCountRunningIntoTheNextWord) {
               "17179869161 bytes of data) but only 26 bytes follow it: a truncated file?");
 }
 
+TEST(MeshLoaderErrors, OffCountsRightAfterTheHeaderWord) {
+    // Found by fuzz/mesh_fuzzer.cpp: assimp reads counts glued to "OFF"
+    // (its leading digits, wrapped to 32 bits) and allocated 45 GB for them.
+    const std::string off = "OFF" + std::string(46, '5') + "1 4\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    // 555...551 (47 digits) mod 2^32 = 3,817,748,703 vertices of 3
+    // coordinates and 4 faces: 6 x 3,817,748,703 + 2 x 4 - 1 bytes at least;
+    // after the "4", 1 + 26 bytes.
+    EXPECT_EQ(mesh_error("glued.off", off),
+              "FILE: error: the OFF header declares 3817748703 vertices and 4 faces (at least 22906492225 bytes) "
+              "but only 27 bytes follow the counts: a truncated file?");
+    // The header's other forms: a comment first, nOFF's dimension, no "OFF"
+    // at all. 9 vertices of 3 coordinates and a face: 6 x 9 + 2 - 1 bytes
+    // at least; of 2 (nOFF 2): 4 x 9 + 2 - 1. What follows the face count
+    // is counted from it: " 0\n" and the lines.
+    EXPECT_EQ(mesh_error("comment.off", "# made by hand\nOFF\n9 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+              "FILE: error: the OFF header declares 9 vertices and 1 face (at least 55 bytes) but only 29 bytes "
+              "follow the counts: a truncated file?");
+    EXPECT_EQ(mesh_error("dims.off", "nOFF 2\n9 1 0\n0 0\n1 0\n0 1\n3 0 1 2\n"),
+              "FILE: error: the OFF header declares 9 vertices and 1 face (at least 37 bytes) but only 23 bytes "
+              "follow the counts: a truncated file?");
+    EXPECT_EQ(mesh_error("bare.off", "9 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+              "FILE: error: the OFF header declares 9 vertices and 1 face (at least 55 bytes) but only 29 bytes "
+              "follow the counts: a truncated file?");
+}
+
 TEST(MeshLoaderErrors, TruncatedOff) {
     const std::string off = cube_off();
     // assimp only logs it, and keeps faces without indices.
