@@ -17,8 +17,10 @@
 //   - its PLY reader loops forever on a header without end_header, and it and
 //     the OFF reader allocate whatever count the header declares (400 million
 //     vertices in a 200-byte PLY: 4.7 GB): their headers' counts are checked
-//     against the file's size first (upstream has since fixed the loop and
-//     the OFF allocation).
+//     against the file's size first, read as assimp reads them -- leading
+//     digits wrapped to 32 bits, "OFF" glued to the counts -- so that no
+//     garbled header hides a count it will use (src/meshes/mesh_file_headers.cpp;
+//     upstream has since fixed the loop and the OFF allocation).
 //   - a PLY face with no indices (a file cut short after its header) makes
 //     Triangulate abort the process on an assertion (assimp issue #5684): such
 //     faces are refused before triangulating.
