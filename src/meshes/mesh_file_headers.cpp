@@ -80,6 +80,11 @@ bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
     if (end == std::string::npos)
         throw InputError(path, "the PLY header has no end_header line (a truncated file?)");
     const std::size_t newline = head.find('\n', end);
+    // assimp 5.2.5 reads past the end for ever when the file ends on
+    // end_header after a line it does not know (fuzzing found two): a PLY's
+    // header ends with a line end, and data, if any, follows it.
+    if (newline == std::string::npos && head.size() == file_size)
+        throw InputError(path, "the PLY header's end_header line has no line end (a truncated file?)");
     const std::uintmax_t data_start = newline == std::string::npos ? file_size : newline + 1;
     const std::uint64_t data_bytes = file_size - std::min<std::uintmax_t>(data_start, file_size);
 

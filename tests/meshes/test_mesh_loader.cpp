@@ -490,6 +490,15 @@ TEST(MeshLoaderErrors, OffCountsRightAfterTheHeaderWord) {
               "follow the counts: a truncated file?");
 }
 
+TEST(MeshLoaderErrors, PlyEndingOnEndHeader) {
+    // Found by fuzz/mesh_fuzzer.cpp: after a line assimp 5.2.5 does not
+    // know, a file ending on "end_header" kept it reading for ever.
+    EXPECT_EQ(mesh_error("stray.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header"),
+              "FILE: error: the PLY header's end_header line has no line end (a truncated file?)");
+    EXPECT_EQ(mesh_error("glued.ply", "ply\nformat ascii 1.0\nelement$vertex 4\nend_header"),
+              "FILE: error: the PLY header's end_header line has no line end (a truncated file?)");
+}
+
 TEST(MeshLoaderErrors, TruncatedOff) {
     const std::string off = cube_off();
     // assimp only logs it, and keeps faces without indices.
