@@ -440,27 +440,24 @@ TEST(MeshLoaderErrors, TruncatedBinaryPly) {
               "FILE: error: the PLY header has no end_header line (a truncated file?)");
 }
 
-TEST(MeshLoaderErrors, HugeAsciiPlyCountBehindAGarbledElement) {
-    // Found by fuzz/mesh_fuzzer.cpp: assimp would allocate 48 GB for the
-    // vertices; an unreadable element count once stopped the size check.
-    const std::string ply =
-        "ply\nformat ascii 1.0\nelement vertex 4294967295\nproperty float x\nproperty float y\n"
-        "element face many\nproperty list uchar int vertex_indices\nend_header\n0 0\n1 0\n0 1\n3 0 1 2\n";
-    EXPECT_EQ(mesh_error("huge.ply", ply),
+// Element counts read as assimp reads them, so that none hides from the
+// size check. Both files found by fuzz/mesh_fuzzer.cpp.
+TEST(MeshLoaderErrors, PlyCountsReadAsAssimpReadsThem) {
+    // An unreadable count ("many", 0 to assimp) once stopped the check, and
+    // assimp would allocate 48 GB for the vertices.
+    EXPECT_EQ(mesh_error("huge.ply",
+                         "ply\nformat ascii 1.0\nelement vertex 4294967295\nproperty float x\nproperty float y\n"
+                         "element face many\nproperty list uchar int vertex_indices\nend_header\n0 0\n1 0\n0 1\n3 0 1 2\n"),
               "FILE: error: the PLY header declares element vertex 4294967295, element face 0 (at least "
               "17179869179 bytes of data) but only 20 bytes follow it: a truncated file?");
-}
-
-TEST(MeshLoaderErrors, PlyCountRunningIntoTheNextWord) {
-    // Found by fuzz/mesh_fuzzer.cpp: a count glued to the next line by a
-    // control character, which assimp reads as its leading digits (wrapped
-    // to 32 bits) and then loops over for minutes.
-    const std::string ply =
-        "ply\nformat ascii 1.0\nelement vertex 42949672954\bproperty float x\nproperty float y\nproperty float z\n"
-        "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
-    // 42,949,672,954 mod 2^32 vertices of two ASCII values (x is glued into
-    // the element's line), one face: 4,294,967,290 x 4 + 2 - 1 bytes at least.
-    EXPECT_EQ(mesh_error("glued.ply", ply),
+    // A count glued to the next line by a control character: assimp reads
+    // its leading digits, wrapped to 32 bits, and looped over them for
+    // minutes. 42,949,672,954 mod 2^32 vertices of two ASCII values (x is
+    // glued into the element's line), one face: 4,294,967,290 x 4 + 2 - 1.
+    EXPECT_EQ(mesh_error("glued.ply",
+                         "ply\nformat ascii 1.0\nelement vertex 42949672954\bproperty float x\nproperty float y\n"
+                         "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                         "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
               "FILE: error: the PLY header declares element vertex 4294967290, element face 1 (at least "
               "17179869161 bytes of data) but only 26 bytes follow it: a truncated file?");
 }
