@@ -117,16 +117,6 @@ void cull_to_frustum(const FlatGeometry<T>& geometry, const TileFrustum& frustum
         out.prims.clear();
         out.walk_bvh = true;
     };
-    // A big tree is only tested by its root box: a tile over it then almost
-    // never finds as few as kMaxSubset, and the frustum walk that finds that
-    // out cost more than the lists it found saved (docs/speed.md, log).
-    if (bvh.nodes[0].below > kMaxCulledPrimitives) {
-        const BvhNode& root = bvh.nodes[0];
-        if (frustum.overlap(dvec3(root.lo[0], root.lo[1], root.lo[2]), dvec3(root.hi[0], root.hi[1], root.hi[2])) !=
-            TileFrustum::Overlap::outside)
-            give_up();
-        return;
-    }
     int stack[160];
     int top = 0;
     stack[top++] = 0;
@@ -138,6 +128,10 @@ void cull_to_frustum(const FlatGeometry<T>& geometry, const TileFrustum& frustum
         // Every primitive under a box inside the frustum would be kept: when
         // they are too many, there is no need to go down and count them.
         if (o == TileFrustum::Overlap::inside && out.prims.size() + size_t(n.below) > kMaxSubset) return give_up();
+        // A big tree gets no further than its root: a tile over it almost
+        // never finds as few as kMaxSubset, and the frustum walk that finds
+        // that out cost more than the lists it found saved (docs/speed.md, log).
+        if (n.below > kMaxCulledPrimitives) return give_up();
         if (!n.leaf()) {
             stack[top++] = n.first;
             stack[top++] = n.second;
