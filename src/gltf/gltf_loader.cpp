@@ -566,8 +566,8 @@ private:
             spot.intensity = intensity;
             spot.node = node;
             spot.max_angle = l.type == "point" ? kInfinity<double> : l.spot.outerConeAngle;
-            // (0, pi/2] by the extension; pi/2 as a float rounds a little past it.
-            if (!(spot.max_angle > 0) || (l.type == "spot" && spot.max_angle > 1.5707964))
+            // (0, pi/2] by the extension; pi/2 written as a float rounds a little past it.
+            if (!(spot.max_angle > 0) || (l.type == "spot" && spot.max_angle > double(float(std::numbers::pi / 2))))
                 fail(name + ": outerConeAngle must be in (0, pi/2]");
             s.spot_lights.push_back(spot);
         } else {

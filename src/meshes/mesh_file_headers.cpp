@@ -39,14 +39,12 @@ std::uint64_t saturating_mul(std::uint64_t a, std::uint64_t b) {
     return __builtin_mul_overflow(a, b, &r) ? std::numeric_limits<std::uint64_t>::max() : r;
 }
 
-// A PLY element's count as assimp 5.2.5 reads it (strtoul10): the leading
-// digits, in 32 bits that wrap, whatever follows them; 0 without any.
-std::uint64_t ply_count(const std::string& word) {
+// A count as assimp 5.2.5 reads it (strtoul10) from text[at] on: the
+// leading digits, in 32 bits that wrap, whatever follows them; 0 without
+// any. `at` moves past the digits.
+std::uint64_t assimp_count(const std::string& text, std::size_t& at) {
     std::uint32_t value = 0;
-    for (const char c : word) {
-        if (c < '0' || c > '9') break;
-        value = value * 10 + std::uint32_t(c - '0');
-    }
+    for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at) value = value * 10 + std::uint32_t(text[at] - '0');
     return value;
 }
 
@@ -109,7 +107,8 @@ bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
             // 4-billion-vertex header hidden behind a garbled count, and one
             // whose count ran into the next line's word
             // ("42949672954\bproperty", 4,294,967,290 to assimp).
-            Element e{name, ply_count(count), 0};
+            std::size_t digits = 0;
+            Element e{name, assimp_count(count, digits), 0};
             elements.push_back(e);
         } else if (word == "property" && !elements.empty()) {
             words >> name;  // the type; for a list, the type of its length
@@ -157,11 +156,6 @@ void check_off_header(const std::string& path, std::uintmax_t file_size) {
         }
     };
     auto starts = [&](const char* word) { return head.compare(at, std::strlen(word), word) == 0; };
-    auto count = [&] {  // assimp's strtoul10
-        std::uint32_t value = 0;
-        for (; at < head.size() && head[at] >= '0' && head[at] <= '9'; ++at) value = value * 10 + std::uint32_t(head[at] - '0');
-        return std::uint64_t(value);
-    };
     next_token();
     if (starts("ST")) at += 2;
     if (starts("C")) ++at;
@@ -178,14 +172,14 @@ void check_off_header(const std::string& path, std::uintmax_t file_size) {
     }
     std::uint64_t dimensions = 3;
     if (has_dimension) {
-        dimensions = count();
+        dimensions = assimp_count(head, at);
         next_token();
     }
     if (dimensions > 3) return;  // assimp's to report
     next_token();
-    const std::uint64_t vertices = count();
+    const std::uint64_t vertices = assimp_count(head, at);
     next_token();
-    const std::uint64_t faces = count();
+    const std::uint64_t faces = assimp_count(head, at);
     if (vertices == 0 || faces == 0) return;  // assimp's to report ("no valid vertices/faces")
     const std::uint64_t rest = file_size - std::min<std::uintmax_t>(at, file_size);
     std::uint64_t needed = saturating_add(saturating_mul(vertices, 2 * std::max<std::uint64_t>(dimensions, 1)),
