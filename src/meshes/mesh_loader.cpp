@@ -26,6 +26,11 @@
 //     faces are refused before triangulating.
 //   - binary PLY data whose first byte is 0x0a loses that byte (assimp issue
 //     #5341): refused with that reason rather than misread.
+//   - its PLY reader sizes each list by the length it reads before reading
+//     the list (34 GB for one length in a 200-byte file; 1.3 GB for a binary
+//     file cut short, whose end it reads as the 0x0a bytes its buffer was
+//     filled with): the data is walked first as assimp will read it, and a
+//     list longer than what follows it is refused (src/meshes/ply_lists.h).
 #include "meshes/mesh_loader.h"
 
 #include <assimp/DefaultLogger.hpp>
@@ -51,6 +56,7 @@
 
 #include "text/input_error.h"
 #include "meshes/mesh_file_headers.h"
+#include "meshes/ply_lists.h"
 #include "meshes/mesh_records.h"
 #include "meshes/mesh_text.h"
 
@@ -479,7 +485,10 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
     const std::uintmax_t size = check_file(path);
     const Format format = format_of(path);
     bool binary_ply = false;
-    if (format == Format::ply) binary_ply = check_ply_header(path, size);
+    if (format == Format::ply) {
+        binary_ply = check_ply_header(path, size);
+        check_ply_lists(path);
+    }
     if (format == Format::off) check_off_header(path, size);
     try {
         MessageCollector log;

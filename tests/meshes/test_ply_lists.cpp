@@ -1,0 +1,136 @@
+// The PLY list check (meshes/ply_lists.h): lengths assimp 5.2.5 would size a
+// list by before reading it are refused where they exceed what follows
+// them; every file that is well formed passes, with its lines as assimp
+// splits them (CRLF, a last line without a line end, elements assimp skips).
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+
+#include "meshes/ply_lists.h"
+#include "text/input_error.h"
+#include "test_util.h"
+
+namespace fh {
+namespace {
+
+// The formatted error of checking `content` as a .ply, the path shown as FILE.
+std::string check(const std::string& content) {
+    const std::string path = test::write_temp_file("lists.ply", content);
+    try {
+        check_ply_lists(path);
+    } catch (const InputError& e) {
+        std::string s = e.formatted();
+        if (s.rfind(path, 0) == 0) s.replace(0, path.size(), "FILE");
+        return s;
+    }
+    return "(no error)";
+}
+
+const std::string kTriangleHeader =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+const std::string kVertices = "0 0 0\n1 0 0\n0 1 0\n";
+
+std::string le32(std::uint32_t v) {
+    std::string s;
+    for (int i = 0; i < 4; ++i) s += static_cast<char>(v >> (8 * i) & 0xff);
+    return s;
+}
+
+TEST(PlyLists, WellFormedFilesPass) {
+    EXPECT_EQ(check(kTriangleHeader + kVertices + "3 0 1 2\n"), "(no error)");
+    // CRLF lines, and a last line with no line end.
+    std::string crlf = kTriangleHeader + kVertices + "3 0 1 2";
+    for (size_t at = crlf.find('\n'); at != std::string::npos; at = crlf.find('\n', at + 2)) crlf.insert(at, "\r");
+    EXPECT_EQ(check(crlf), "(no error)");
+    EXPECT_EQ(check(kTriangleHeader + kVertices + "3 0 1 2"), "(no error)");
+    // A polygon of 200 corners: a list as long as its line allows.
+    std::string polygon = "ply\nformat ascii 1.0\nelement face 1\nproperty list ushort int vertex_indices\nend_header\n200";
+    for (int i = 0; i < 200; ++i) polygon += " " + std::to_string(i);
+    EXPECT_EQ(check(polygon + "\n"), "(no error)");
+    // Binary, little-endian: three float vertices, one face.
+    std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                         "property float y\nproperty float z\nelement face 1\n"
+                         "property list uchar uint vertex_indices\nend_header\n";
+    binary += std::string(36, '\0') + '\3' + le32(0) + le32(1) + le32(2);
+    EXPECT_EQ(check(binary), "(no error)");
+}
+
+TEST(PlyLists, AsciiLengthsBeyondTheirLine) {
+    // Fuzzing found it: a uchar length that assimp reads as 32 bits (a 34 GB
+    // list); 1,500,000,000 took 30 s and 11.7 GB.
+    EXPECT_EQ(check(kTriangleHeader + kVertices + "4294967289 0 1 2\n"),
+              "FILE:13:1: error: a PLY list of 4294967289 values, but only 6 bytes follow on its line (a corrupt "
+              "file?)");
+    // A signed length of -1 is 4,294,967,295 to assimp.
+    std::string signed_length = kTriangleHeader;
+    signed_length.replace(signed_length.find("uchar int"), 9, "int int");
+    EXPECT_EQ(check(signed_length + kVertices + "-1 0 1 2\n"),
+              "FILE:13:1: error: a PLY list of 4294967295 values, but only 6 bytes follow on its line (a corrupt "
+              "file?)");
+    // Four values where three follow: short, but not beyond the line.
+    EXPECT_EQ(check(kTriangleHeader + kVertices + "4 0 1 2\n"), "(no error)");
+}
+
+TEST(PlyLists, ReadWhereAssimpReads) {
+    // The fuzzer's file: a garbled property line, which assimp drops (so the
+    // vertex has two values, and a face's line with a NUL ends early), then
+    // a length glued to a word, which assimp reads up to the word.
+    const std::string found =
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nprxperty float z\n"
+        "element face 4\nproperty list uchar int vertex_indices\nend_header\n5 0 0\n1nan0\n0 1 0\n0 0 1\n"
+        "3 0 2 1%=" + std::string(1, '\0') + "42949672953da-e3 1 2 3\n";
+    EXPECT_EQ(check(found),
+              "FILE:15:1: error: a PLY list of 4294967289 values, but only 11 bytes follow on its line (a corrupt "
+              "file?)");
+    // An element of a name assimp does not know has its count read from
+    // that name -- 0 -- so its lines are read as the next element's.
+    const std::string unknown =
+        "ply\nformat ascii 1.0\nelement normals 1\nproperty float w\nelement face 1\n"
+        "property list uint int vertex_indices\nend_header\n4000000000\n3 0 1 2\n";
+    EXPECT_EQ(check(unknown),
+              "FILE:8:1: error: a PLY list of 4000000000 values, but only 0 bytes follow on its line (a corrupt "
+              "file?)");
+    // A line that runs out of values before its properties do: assimp
+    // would read the rest from what an earlier line left in its buffer.
+    const std::string short_line =
+        "ply\nformat ascii 1.0\nelement face 2\nproperty uchar flags\nproperty list uchar int vertex_indices\n"
+        "end_header\n0 3 1 2 3 4294967295 4294967295\n7\n";
+    EXPECT_EQ(check(short_line),
+              "FILE:8:2: error: a PLY line holds values for only 1 of its 2 properties; assimp would read the "
+              "others from an earlier line");
+    // A name read as a count ("element 4000000000 1"), for an element assimp skips line by line.
+    const std::string named = "ply\nformat ascii 1.0\nelement 4000000000 1\nproperty float x\nend_header\n1\n";
+    EXPECT_EQ(check(named), "FILE: error: assimp 5.2.5 would read 4000000000 instances of a PLY element from a "
+                            "file of " + std::to_string(named.size()) + " bytes");
+}
+
+TEST(PlyLists, BinaryLengthsBeyondTheFile) {
+    const std::string header = "ply\nformat binary_little_endian 1.0\nelement face 1\n"
+                               "property list uint uint vertex_indices\nend_header\n";
+    const std::string after_length = std::to_string(header.size() + 4);
+    EXPECT_EQ(check(header + le32(0xffffffffu) + le32(0) + le32(1) + le32(2)),
+              "FILE: error: a binary PLY list of 4294967295 values at byte " + after_length +
+                  ", but only 12 bytes follow (a corrupt or truncated file?)");
+    // Cut short: past its end assimp reads the line ends its buffer was
+    // filled with (a length of 0x0a0a0a0a).
+    EXPECT_EQ(check(header + le32(3) + le32(0) + le32(1) + le32(2)), "(no error)");
+    EXPECT_EQ(check(header + le32(3) + le32(0) + le32(1)),
+              "FILE: error: a binary PLY list of 3 values at byte " + after_length +
+                  ", but only 8 bytes follow (a corrupt or truncated file?)");
+    // Cut before the second face's length: assimp took the filler for it,
+    // 0x0a0a0a0a values (1.3 GB for this 120-byte file).
+    std::string two_faces = header;
+    two_faces.replace(two_faces.find("face 1"), 6, "face 2");
+    EXPECT_EQ(check(two_faces + le32(3) + le32(0) + le32(1) + le32(2) + std::string(2, '\0')),
+              "FILE: error: the binary PLY data ends before its elements do (a truncated file?)");
+    const std::string two = "ply\nformat binary_big_endian 1.0\nelement face 2\n"
+                            "property list uchar int vertex_indices\nend_header\n";
+    std::string big = two + '\3' + std::string("\0\0\0\0\0\0\0\1\0\0\0\2", 12);
+    EXPECT_EQ(check(big), "FILE: error: the binary PLY data ends before its elements do (a truncated file?)");
+    EXPECT_EQ(check(big + '\1' + std::string("\0\0\0\7", 4)), "(no error)");
+}
+
+}  // namespace
+}  // namespace fh
