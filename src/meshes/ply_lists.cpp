@@ -40,7 +40,8 @@ bool is_space(char c) { return c == ' ' || c == '\t'; }
 // holding the whole file.
 class FileBlocks {
 public:
-    FileBlocks(std::ifstream& in, std::uint64_t size) : in_(in), size_(size), block_(std::size_t(1) << 20, '\0') {}
+    FileBlocks(std::ifstream& in, std::uint64_t size)
+        : in_(in), size_(size), block_(std::size_t(std::min<std::uint64_t>(size, std::uint64_t(1) << 20)), '\0') {}
 
     std::uint64_t size() const { return size_; }
     // The block holding [at, at + n) (which must lie inside the file), and where `at` is in it.
