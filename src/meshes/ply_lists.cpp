@@ -2,220 +2,24 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "meshes/assimp_replay.h"
 #include "text/input_error.h"
 
-// Each function below is named after the assimp 5.2.5 function it follows
-// (code/AssetLib/Ply/PlyParser.cpp, include/assimp/IOStreamBuffer.h,
-// ParsingUtils.h, fast_atof.h); only what decides where values are read and
-// how long a list is, not the values.
+// The header read as PLY::DOM::ParseHeader reads it, then the data as
+// ParseElementInstanceLists(Binary) does (code/AssetLib/Ply/PlyParser.cpp of
+// assimp 5.2.5), each function named after the one it follows, over the
+// replayed line buffer and pointer walks (meshes/assimp_replay.h).
 namespace fh {
 
 namespace {
 
-// A place where assimp would read outside its buffer: nothing can be said
-// of what it does then, so the file is refused.
-struct PastTheBuffer {};
-
-// assimp's std::vector<char> buffer, read with assimp's pointer walks.
-struct Buffer {
-    std::string bytes;
-    char at(std::size_t i) const {
-        if (i >= bytes.size()) throw PastTheBuffer{};
-        return bytes[i];
-    }
-};
-
-bool is_line_end(char c) { return c == '\r' || c == '\n' || c == '\0' || c == '\f'; }
-bool is_space(char c) { return c == ' ' || c == '\t'; }
-
-// The bytes at [at, at + n) of a file, n at most a block, through one block
-// kept in memory: the check reads as assimp does, front to back, without
-// holding the whole file.
-class FileBlocks {
-public:
-    FileBlocks(std::ifstream& in, std::uint64_t size)
-        : in_(in), size_(size), block_(std::size_t(std::min<std::uint64_t>(size, std::uint64_t(1) << 20)), '\0') {}
-
-    std::uint64_t size() const { return size_; }
-    // The block holding [at, at + n) (which must lie inside the file), and where `at` is in it.
-    const char* bytes(std::uint64_t at, std::size_t n) {
-        if (at < first_ || at + n > first_ + filled_) {
-            in_.clear();
-            in_.seekg(std::streamoff(at));
-            in_.read(block_.data(), std::streamsize(block_.size()));
-            first_ = at;
-            filled_ = std::size_t(std::max<std::streamsize>(in_.gcount(), 0));
-            if (at + n > first_ + filled_) throw PastTheBuffer{};  // the file shrank meanwhile
-        }
-        return block_.data() + (at - first_);
-    }
-
-private:
-    std::ifstream& in_;
-    std::uint64_t size_;
-    std::string block_;
-    std::uint64_t first_ = 0;
-    std::size_t filled_ = 0;
-};
-
-// Bytes that end a line for assimp (IsLineEnd), as a table.
-struct LineEnds {
-    bool at[256] = {};
-    constexpr LineEnds() { at['\r'] = at['\n'] = at['\0'] = at['\f'] = true; }
-};
-constexpr LineEnds kLineEnds;
-
-// IOStreamBuffer<char> with PlyLoader's 1 MiB cache: the lines assimp
-// reads, with what its buffer keeps between them.
-class StreamBuffer {
-public:
-    explicit StreamBuffer(FileBlocks& file)
-        : file_(file), cache_(std::size_t(1) << 20, '\n'), cache_size_(std::min<std::uint64_t>(cache_.size(), file.size())) {}
-
-    bool get_next_line(Buffer& buffer) {
-        copied_ = false;
-        buffer.bytes.resize(cache_size_);
-        if (cache_pos_ == cache_size_ || file_pos_ == 0)
-            if (!read_next_block()) return false;
-        if (is_line_end(cache(cache_pos_))) {
-            while (cache(cache_pos_) != '\n') ++cache_pos_;
-            ++cache_pos_;
-            if (cache_pos_ == cache_size_ && !read_next_block()) return false;
-        }
-        std::size_t i = 0;
-        ++lines_;
-        while (!is_line_end(cache(cache_pos_))) {
-            // assimp copies byte by byte, doubling the buffer whenever it is
-            // full, and reads the next block after a block's last byte. The
-            // bytes up to a line end or the block's end at once (past the
-            // block, where the line-end skip above can leave it: one).
-            copied_ = true;
-            std::size_t end = cache_pos_ + 1;
-            while (end < cache_size_ && !kLineEnds.at[static_cast<unsigned char>(cache_[end])]) ++end;
-            const std::size_t n = end - cache_pos_;
-            while (buffer.bytes.size() <= i + n) buffer.bytes.resize(buffer.bytes.size() * 2);
-            std::memcpy(&buffer.bytes[i], &cache_[cache_pos_], n);
-            i += n;
-            cache_pos_ += n;
-            if (cache_pos_ >= cache_size_ && !read_next_block()) return false;
-        }
-        buffer.bytes[i] = '\n';
-        ++cache_pos_;
-        copied_ = true;
-        return true;
-    }
-
-    // Where binary data starts (getNextBlock after the header's last line).
-    std::uint64_t file_position() const { return file_pos_ - cache_size_ + cache_pos_; }
-    int lines() const { return lines_; }  // read so far (the last one's number)
-    bool copied() const { return copied_; }  // the last get_next_line wrote into the buffer
-
-private:
-    char cache(std::size_t i) const {
-        if (i >= cache_.size()) throw PastTheBuffer{};
-        return cache_[i];
-    }
-    bool read_next_block() {
-        const std::size_t n = std::size_t(file_pos_ < file_.size() ? std::min<std::uint64_t>(cache_size_, file_.size() - file_pos_) : 0);
-        if (n == 0) return false;
-        std::memcpy(cache_.data(), file_.bytes(file_pos_, n), n);
-        cache_size_ = n;
-        file_pos_ += cache_size_;
-        cache_pos_ = 0;
-        return true;
-    }
-
-    FileBlocks& file_;
-    std::string cache_;
-    std::size_t cache_size_, cache_pos_ = 0;
-    std::uint64_t file_pos_ = 0;
-    int lines_ = 0;
-    bool copied_ = false;
-};
-
-// Where assimp's pointer walks stop, from b[i] on.
-std::size_t past_spaces(const Buffer& b, std::size_t i) {
-    while (is_space(b.at(i))) ++i;
-    return i;
-}
-std::size_t past_line(const Buffer& b, std::size_t i) {  // Assimp::SkipLine
-    while (b.at(i) != '\r' && b.at(i) != '\n' && b.at(i) != '\0') ++i;
-    while (b.at(i) == '\r' || b.at(i) == '\n') ++i;
-    return i;
-}
-// Assimp::TokenMatch at b[i]: the token, then a space or line end (taken
-// too, unless it is the terminating zero); 0 when it does not match.
-std::size_t token_at(const Buffer& b, std::size_t i, const char* token) {
-    const std::size_t n = std::strlen(token);
-    for (std::size_t k = 0; k < n; ++k)
-        if (b.at(i + k) != token[k]) return 0;
-    const char after = b.at(i + n);
-    if (!is_space(after) && !is_line_end(after)) return 0;
-    return after != '\0' ? n + 1 : n;
-}
-
-// PLY::DOM's helpers: each walks from the buffer's start and erases what it passed.
-bool skip_spaces(Buffer& b) {
-    if (b.bytes.empty()) return false;
-    const std::size_t i = past_spaces(b, 0);
-    const bool more = !is_line_end(b.at(i));
-    b.bytes.erase(0, i);
-    return more;
-}
-std::size_t skip_line(Buffer& b) {  // how much it erased
-    if (b.bytes.empty()) return 0;
-    const std::size_t i = past_line(b, 0);
-    b.bytes.erase(0, i);
-    return i;
-}
-bool skip_spaces_and_line_end(Buffer& b) {
-    if (b.bytes.empty()) return false;
-    std::size_t i = 0;
-    while (is_space(b.at(i)) || b.at(i) == '\r' || b.at(i) == '\n') ++i;
-    const bool more = b.at(i) != '\0';
-    b.bytes.erase(0, i);
-    return more;
-}
-bool token_match(Buffer& b, const char* token) {
-    if (b.bytes.empty()) return false;
-    const std::size_t n = token_at(b, 0, token);
-    b.bytes.erase(0, n);
-    return n > 0;
-}
-// PLY::DOM::SkipComments, which walks a copy and keeps it only for a
-// comment that does not name a TextureFile. Returns how much it erased.
-std::size_t skip_comments(Buffer& b) {
-    if (b.bytes.empty()) return 0;
-    std::size_t i = past_spaces(b, 0);
-    if (is_line_end(b.at(i))) return 0;
-    const std::size_t comment = token_at(b, i, "comment");
-    if (comment == 0) return 0;
-    i = past_spaces(b, i + comment);
-    if (is_line_end(b.at(i))) i = past_line(b, i);
-    if (token_at(b, i, "TextureFile") > 0) return 0;
-    i = past_line(b, i);
-    b.bytes.erase(0, i);
-    return i;
-}
-
-enum class Type { invalid, int8, uint8, int16, uint16, int32, uint32, float32, float64 };
-
-std::size_t bytes_of(Type t) {
-    switch (t) {
-    case Type::int8: case Type::uint8: return 1;
-    case Type::int16: case Type::uint16: return 2;
-    case Type::int32: case Type::uint32: case Type::float32: return 4;
-    case Type::float64: return 8;
-    default: return 0;
-    }
-}
+using namespace assimp_replay;
 
 Type parse_data_type(Buffer& b) {
     const std::pair<const char*, Type> names[] = {
@@ -288,71 +92,6 @@ bool parse_element(StreamBuffer& stream, Buffer& b, Element& e) {
         if (!parse_property(b, p)) break;
         e.properties.push_back(p);
     }
-    return true;
-}
-
-// Where assimp stops reading a value of `type` at text[i] (PropertyInstance::
-// ParseValue), and the value as a list length (ConvertTo<unsigned int>); false
-// where assimp throws (fast_atoreal_move on a value that is no number).
-bool parse_value(const Buffer& b, std::size_t& i, Type type, std::uint64_t& length) {
-    auto digits = [&](std::uint64_t limit_bits) {
-        std::uint64_t v = 0;
-        for (; b.at(i) >= '0' && b.at(i) <= '9'; ++i) v = (v * 10 + std::uint64_t(b.at(i) - '0')) & limit_bits;
-        return v;
-    };
-    if (type == Type::uint8 || type == Type::uint16 || type == Type::uint32) {
-        length = digits(0xffffffffu);  // strtoul10: 32 bits that wrap
-        return true;
-    }
-    if (type == Type::int8 || type == Type::int16 || type == Type::int32) {
-        const bool negative = b.at(i) == '-';
-        if (negative || b.at(i) == '+') ++i;
-        const std::uint32_t v = std::uint32_t(digits(0xffffffffu));
-        length = negative ? std::uint32_t(0u - v) : v;  // strtol10's int, as unsigned
-        return true;
-    }
-    // fast_atoreal_move (with check_comma): the value only as a length --
-    // whole numbers below 2^24 exactly, anything else as "too long".
-    length = 0xffffffffu;
-    const bool negative = b.at(i) == '-';
-    if (negative || b.at(i) == '+') ++i;
-    auto named = [&](const char* word) {
-        for (std::size_t k = 0; word[k]; ++k)
-            if (std::tolower(static_cast<unsigned char>(b.at(i + k))) != word[k]) return false;
-        return true;
-    };
-    if (named("nan")) return i += 3, true;
-    if (named("inf")) return i += named("infinity") ? 8 : 3, true;
-    auto digit = [&](std::size_t k) { return b.at(k) >= '0' && b.at(k) <= '9'; };
-    const bool point = b.at(i) == '.' || b.at(i) == ',';
-    if (!digit(i) && !(point && digit(i + 1))) return false;
-    bool whole = true;
-    std::uint64_t v = 0;
-    if (!point) {  // strtoul10_64: on overflow it returns 0 and leaves the pointer where it was
-        bool overflow = false;
-        std::size_t k = i;
-        for (; digit(k); ++k) {
-            const std::uint64_t next = v * 10 + std::uint64_t(b.at(k) - '0');
-            if (next < v) overflow = true;
-            v = next;
-        }
-        if (overflow) return length = 0, true;
-        i = k;
-    }
-    if ((b.at(i) == '.' || b.at(i) == ',') && digit(i + 1)) {
-        for (++i; digit(i); ++i)
-            if (b.at(i) != '0') whole = false;
-    } else if (b.at(i) == '.') {
-        ++i;
-    }
-    if (b.at(i) == 'e' || b.at(i) == 'E') {
-        ++i;
-        if (b.at(i) == '-' || b.at(i) == '+') ++i;
-        if (!digit(i)) return false;  // strtoul10_64 throws
-        while (digit(i)) ++i;
-        whole = false;
-    }
-    if (whole && !negative && v < (std::uint64_t(1) << 24)) length = v;
     return true;
 }
 
