@@ -119,8 +119,8 @@ TEST(PlyLists, BinaryLengthsBeyondTheFile) {
     EXPECT_EQ(check(header + le32(3) + le32(0) + le32(1)),
               "FILE: error: a binary PLY list of 3 values at byte " + after_length +
                   ", but only 8 bytes follow (a corrupt or truncated file?)");
-    // Cut before the second face's length: assimp took the filler for it,
-    // 0x0a0a0a0a values (1.3 GB for this 120-byte file).
+    // Cut before the second face's length: assimp takes the filler for it,
+    // 0x0a0a0a0a values (1.3 GB).
     std::string two_faces = header;
     two_faces.replace(two_faces.find("face 1"), 6, "face 2");
     EXPECT_EQ(check(two_faces + le32(3) + le32(0) + le32(1) + le32(2) + std::string(2, '\0')),
