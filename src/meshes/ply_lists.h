@@ -5,12 +5,13 @@
 // it). A truncated binary file is as bad: past the file's end assimp reads
 // the line-end bytes its buffer was filled with, 0x0a0a0a0a values long.
 //
-// So the file is read here the way assimp reads it -- its line buffer
-// (IOStreamBuffer), its header parser with its quirks (an element of a name
-// it does not know gets its count from that name: usually 0), and where
-// each value ends -- and a list longer than what follows it on its line
-// (ASCII) or in the file (binary) is refused. Where assimp itself would give
-// up on a value (it throws), the check stops: assimp reads no further.
+// So the file is read here the way assimp reads it -- its line buffer and
+// where each value ends (replayed in meshes/assimp_replay.h), its header
+// parser with its quirks (an element of a name it does not know gets its
+// count from that name: usually 0) -- and a list longer than what follows
+// it on its line (ASCII) or in the file (binary) is refused. Where assimp
+// itself would give up on a value (it throws), the check stops: assimp
+// reads no further.
 #pragma once
 
 #include <string>
