@@ -38,9 +38,9 @@ bool StreamBuffer::get_next_line(Buffer& buffer) {
     return true;
 }
 
-
 bool StreamBuffer::read_next_block() {
-    const std::size_t n = std::size_t(file_pos_ < file_.size() ? std::min<std::uint64_t>(cache_size_, file_.size() - file_pos_) : 0);
+    const std::uint64_t left = file_pos_ < file_.size() ? file_.size() - file_pos_ : 0;
+    const std::size_t n = std::size_t(std::min<std::uint64_t>(cache_size_, left));
     if (n == 0) return false;
     std::memcpy(cache_.data(), file_.bytes(file_pos_, n), n);
     cache_size_ = n;
@@ -49,6 +49,7 @@ bool StreamBuffer::read_next_block() {
     return true;
 }
 
+// ---- ParsingUtils' pointer walks, and PLY::DOM's erasing ones over them ----
 
 std::size_t past_spaces(const Buffer& b, std::size_t i) {
     while (is_space(b.at(i))) ++i;
@@ -111,6 +112,8 @@ std::size_t skip_comments(Buffer& b) {
     return i;
 }
 
+// ---- fast_atof.h: where a value ends ----
+
 bool parse_value(const Buffer& b, std::size_t& i, Type type, std::uint64_t& length) {
     auto digits = [&](std::uint64_t limit_bits) {
         std::uint64_t v = 0;
@@ -172,6 +175,5 @@ bool parse_value(const Buffer& b, std::size_t& i, Type type, std::uint64_t& leng
     if (whole && !negative && v < (std::uint64_t(1) << 24)) length = v;
     return true;
 }
-
 
 }  // namespace fh::assimp_replay

@@ -72,7 +72,9 @@ inline constexpr LineEnds kLineEnds;
 class StreamBuffer {
 public:
     explicit StreamBuffer(FileBlocks& file)
-        : file_(file), cache_(std::size_t(1) << 20, '\n'), cache_size_(std::min<std::uint64_t>(cache_.size(), file.size())) {}
+        : file_(file),
+          cache_(std::size_t(1) << 20, '\n'),
+          cache_size_(std::size_t(std::min<std::uint64_t>(cache_.size(), file.size()))) {}
 
     // getNextLine: the next line into `buffer`, as assimp leaves it; false
     // at the end (the buffer may still have been written: copied()).
