@@ -115,19 +115,14 @@ std::size_t skip_comments(Buffer& b) {
 // ---- fast_atof.h: where a value ends ----
 
 bool parse_value(const Buffer& b, std::size_t& i, Type type, std::uint64_t& length) {
-    auto digits = [&](std::uint64_t limit_bits) {
-        std::uint64_t v = 0;
-        for (; b.at(i) >= '0' && b.at(i) <= '9'; ++i) v = (v * 10 + std::uint64_t(b.at(i) - '0')) & limit_bits;
-        return v;
-    };
     if (type == Type::uint8 || type == Type::uint16 || type == Type::uint32) {
-        length = digits(0xffffffffu);  // strtoul10: 32 bits that wrap
+        length = strtoul10(b.bytes, i);
         return true;
     }
     if (type == Type::int8 || type == Type::int16 || type == Type::int32) {
         const bool negative = b.at(i) == '-';
         if (negative || b.at(i) == '+') ++i;
-        const std::uint32_t v = std::uint32_t(digits(0xffffffffu));
+        const std::uint32_t v = strtoul10(b.bytes, i);
         length = negative ? std::uint32_t(0u - v) : v;  // strtol10's int, as unsigned
         return true;
     }

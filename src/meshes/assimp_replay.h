@@ -27,6 +27,15 @@ struct Buffer {
     }
 };
 
+// strtoul10: the digits from text[at] on (`at` moves past them), in 32 bits
+// that wrap, whatever follows them; 0 without any. Stops at the text's end.
+inline std::uint32_t strtoul10(const std::string& text, std::size_t& at) {
+    std::uint32_t value = 0;
+    for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at)
+        value = value * 10 + std::uint32_t(text[at] - '0');
+    return value;
+}
+
 inline bool is_line_end(char c) { return c == '\r' || c == '\n' || c == '\0' || c == '\f'; }
 inline bool is_space(char c) { return c == ' ' || c == '\t'; }
 

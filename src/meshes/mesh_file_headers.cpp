@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "text/input_error.h"
+#include "meshes/assimp_replay.h"
 #include "meshes/mesh_text.h"
 
 namespace fh {
@@ -37,15 +38,6 @@ std::uint64_t saturating_add(std::uint64_t a, std::uint64_t b) {
 std::uint64_t saturating_mul(std::uint64_t a, std::uint64_t b) {
     std::uint64_t r;
     return __builtin_mul_overflow(a, b, &r) ? std::numeric_limits<std::uint64_t>::max() : r;
-}
-
-// A count as assimp 5.2.5 reads it (strtoul10) from text[at] on: the
-// leading digits, in 32 bits that wrap, whatever follows them; 0 without
-// any. `at` moves past the digits.
-std::uint64_t assimp_count(const std::string& text, std::size_t& at) {
-    std::uint32_t value = 0;
-    for (; at < text.size() && text[at] >= '0' && text[at] <= '9'; ++at) value = value * 10 + std::uint32_t(text[at] - '0');
-    return value;
 }
 
 // Bytes of one binary PLY value of `type` (1 for a name assimp will reject).
@@ -108,7 +100,7 @@ bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
             // whose count ran into the next line's word
             // ("42949672954\bproperty", 4,294,967,290 to assimp).
             std::size_t digits = 0;
-            Element e{name, assimp_count(count, digits), 0};
+            Element e{name, assimp_replay::strtoul10(count, digits), 0};
             elements.push_back(e);
         } else if (word == "property" && !elements.empty()) {
             words >> name;  // the type; for a list, the type of its length
@@ -172,14 +164,14 @@ void check_off_header(const std::string& path, std::uintmax_t file_size) {
     }
     std::uint64_t dimensions = 3;
     if (has_dimension) {
-        dimensions = assimp_count(head, at);
+        dimensions = assimp_replay::strtoul10(head, at);
         next_token();
     }
     if (dimensions > 3) return;  // assimp's to report
     next_token();
-    const std::uint64_t vertices = assimp_count(head, at);
+    const std::uint64_t vertices = assimp_replay::strtoul10(head, at);
     next_token();
-    const std::uint64_t faces = assimp_count(head, at);
+    const std::uint64_t faces = assimp_replay::strtoul10(head, at);
     if (vertices == 0 || faces == 0) return;  // assimp's to report ("no valid vertices/faces")
     const std::uint64_t rest = file_size - std::min<std::uintmax_t>(at, file_size);
     std::uint64_t needed = saturating_add(saturating_mul(vertices, 2 * std::max<std::uint64_t>(dimensions, 1)),

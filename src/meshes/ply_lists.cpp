@@ -42,6 +42,10 @@ struct Element {
     bool parsed_in_ascii = false;  // a semantic assimp knows (vertex, face, ...): its lines are parsed
     std::uint32_t count = 0;
     std::vector<Property> properties;
+
+    bool has_list() const {
+        return std::any_of(properties.begin(), properties.end(), [](const Property& p) { return p.list; });
+    }
 };
 
 bool parse_property(Buffer& b, Property& p) {
@@ -81,8 +85,8 @@ bool parse_element(StreamBuffer& stream, Buffer& b, Element& e) {
     if (!skip_spaces(b)) return false;
     if (texture_file) return skip_spaces_and_line_end(b), true;
     // strtoul10 -- from the name itself when assimp did not know it.
-    std::size_t i = 0;
-    for (; b.at(i) >= '0' && b.at(i) <= '9'; ++i) e.count = e.count * 10 + std::uint32_t(b.at(i) - '0');
+    std::size_t digits = 0;
+    e.count = strtoul10(b.bytes, digits);
     e.parsed_in_ascii = known;
     skip_spaces_and_line_end(b);
     for (;;) {
@@ -156,8 +160,7 @@ void check_ascii(StreamBuffer& stream, Buffer& b, const std::vector<Element>& el
         const bool parsed = e.parsed_in_ascii && !e.properties.empty();
         // Only lists are sized by what is read: the other elements' lines
         // are passed over (reading them changes nothing in the buffer).
-        bool lists = false;
-        for (const Property& p : e.properties) lists |= p.list;
+        const bool lists = e.has_list();
         check_count(e, file_size, path);
         for (std::uint32_t n = 0; n < e.count; ++n) {
             std::size_t erased = 0;
@@ -208,10 +211,9 @@ void check_binary(FileBlocks& file, std::uint64_t at, bool big_endian, const std
     };
     for (const Element& e : elements) {
         check_count(e, file.size(), path);
-        bool lists = false;
-        std::size_t bytes = 0;
-        for (const Property& p : e.properties) lists |= p.list, bytes += bytes_of(p.value);
-        if (!lists) {  // a fixed size: skipped at once
+        if (!e.has_list()) {  // a fixed size: skipped at once
+            std::size_t bytes = 0;
+            for (const Property& p : e.properties) bytes += bytes_of(p.value);
             if ((file.size() - at) / std::max<std::size_t>(bytes, 1) < e.count && bytes > 0) cut_short();
             at += std::uint64_t(bytes) * e.count;
             continue;
