@@ -4,6 +4,13 @@
 // loader reads files: assimp and our header checks both open it). An accepted
 // mesh must hold what load_mesh promises: finite vertices, indices in range,
 // triangles of non-zero corners, normals one a vertex or none.
+//
+// A PLY input whose first byte also has its top bit set is moved across the
+// 1 MiB mark where assimp's line buffer reads its next block: comment lines
+// go after its second line (the format line) so that the rest starts the
+// next two bytes' value (0 .. 65,535) before the mark. Small inputs reach
+// the block boundary that way, which meshes/ply_lists.cpp replays.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -38,7 +45,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string path = (g_folder / (std::string("mesh") + kExtensions[data[0] % 4])).string();
     {
         std::ofstream out(path, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(data + 1), std::streamsize(size - 1));
+        if (data[0] % 4 == 1 && (data[0] & 0x80) && size >= 3) {
+            const std::string body(reinterpret_cast<const char*>(data + 3), size - 3);
+            const std::size_t mark = (std::size_t(1) << 20) - (data[1] | std::size_t(data[2]) << 8);
+            // Past the second line end, or the whole body when it has fewer.
+            std::size_t head = 0;
+            for (int line = 0; line < 2 && head < body.size(); ++line) {
+                const std::size_t end = body.find('\n', head);
+                head = end == std::string::npos ? body.size() : end + 1;
+            }
+            out << body.substr(0, head);
+            // Comment lines of at most 64 KiB, the last at least 9 bytes long.
+            for (std::size_t at = head; at < mark;) {
+                std::size_t n = std::min<std::size_t>(mark - at, 65536);
+                if (mark - at - n < 9 && mark - at > n) n -= 9;
+                out << "comment " << std::string(n - 9, 'x') << '\n';
+                at += n;
+            }
+            out << body.substr(head);
+        } else {
+            out.write(reinterpret_cast<const char*>(data + 1), std::streamsize(size - 1));
+        }
     }
     fh::MeshData mesh;
     try {

@@ -91,6 +91,9 @@ public:
 
     // Where binary data starts (getNextBlock after the header's last line).
     std::uint64_t file_position() const { return file_pos_ - cache_size_ + cache_pos_; }
+    // getNextBlock would hand over an empty buffer: the last line read ended
+    // on the cache's last byte (a full 1 MiB block).
+    bool next_block_empty() const { return cache_pos_ == cache_.size(); }
     int lines() const { return lines_; }  // read so far (the last one's number)
     bool copied() const { return copied_; }  // the last get_next_line wrote into the buffer
 

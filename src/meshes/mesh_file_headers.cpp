@@ -56,7 +56,8 @@ std::uint64_t ply_type_bytes(const std::string& type) {
 // whether the data is binary. Leaves files that do not start with "ply" to
 // assimp, which says so.
 bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
-    const std::string head = read_head(path, std::size_t(1) << 20);
+    constexpr std::size_t kMaxHeader = std::size_t(1) << 20;
+    const std::string head = read_head(path, kMaxHeader);
     if (lowercase(head.substr(0, 3)) != "ply") return false;
     std::size_t end = std::string::npos;
     for (std::size_t at = head.find("end_header"); at != std::string::npos; at = head.find("end_header", at + 1)) {
@@ -67,6 +68,9 @@ bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
             break;
         }
     }
+    if (end == std::string::npos && head.size() == kMaxHeader && file_size > kMaxHeader)
+        throw InputError(path, "the PLY header has no end_header line in its first 1 MiB (firsthit reads headers up "
+                               "to 1 MiB)");
     if (end == std::string::npos)
         throw InputError(path, "the PLY header has no end_header line (a truncated file?)");
     const std::size_t newline = head.find('\n', end);

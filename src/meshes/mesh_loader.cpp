@@ -31,6 +31,9 @@
 //     file cut short, whose end it reads as the 0x0a bytes its buffer was
 //     filled with): the data is walked first as assimp will read it, and a
 //     list longer than what follows it is refused (src/meshes/ply_lists.h).
+//   - a binary PLY header that ends on the last byte of its 1 MiB line buffer
+//     leaves its binary reader an empty block, read through a null pointer (a
+//     crash): refused by the same walk.
 #include "meshes/mesh_loader.h"
 
 #include <assimp/DefaultLogger.hpp>

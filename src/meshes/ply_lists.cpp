@@ -275,7 +275,13 @@ void check_ply_lists(const std::string& path) {
             check_ascii(stream, b, elements, path, file.size());
         } else {
             // getNextBlock, less a first '\n' (taken for the end of "\r\n").
+            // Its buffer is what is left of the cache; when nothing is, its
+            // first byte is read through a null pointer (a crash: fuzzing
+            // found a header ending on the 1 MiB cache's last byte).
             std::uint64_t at = stream.file_position();
+            if (stream.next_block_empty())
+                throw InputError(path, "the binary PLY header ends at byte " + std::to_string(at) +
+                                           ", the end of assimp 5.2.5's 1 MiB buffer, which makes its reader crash");
             if (at < file.size() && *file.bytes(at, 1) == '\n') ++at;
             check_binary(file, std::min(at, file.size()), big_endian, elements, path);
         }

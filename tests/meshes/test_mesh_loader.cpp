@@ -437,6 +437,12 @@ TEST(MeshLoaderErrors, TruncatedBinaryPly) {
     // In the header: assimp 5.2.5 would loop forever.
     EXPECT_EQ(mesh_error("cut_header.ply", ply.substr(0, 60)),
               "FILE: error: the PLY header has no end_header line (a truncated file?)");
+    // A header longer than the 1 MiB read is not called truncated.
+    std::string long_header = ply.substr(0, ply.find("element"));
+    for (int i = 0; i < 17; ++i) long_header += "comment " + std::string(65536 - 9, 'x') + "\n";
+    EXPECT_EQ(mesh_error("long_header.ply", long_header + ply.substr(ply.find("element"))),
+              "FILE: error: the PLY header has no end_header line in its first 1 MiB (firsthit reads headers up to "
+              "1 MiB)");
 }
 
 // Element counts read as assimp reads them, so that none hides from the

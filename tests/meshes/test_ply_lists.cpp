@@ -132,5 +132,36 @@ TEST(PlyLists, BinaryLengthsBeyondTheFile) {
     EXPECT_EQ(check(big + '\1' + std::string("\0\0\0\7", 4)), "(no error)");
 }
 
+// A binary header of exactly `length` bytes: comment lines fill it out.
+std::string binary_header_of(std::size_t length) {
+    const std::string head = "ply\nformat binary_little_endian 1.0\n";
+    const std::string tail = "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
+    std::string header = head;
+    for (std::size_t left = length - head.size() - tail.size(); left > 0;) {
+        const std::size_t n = left > 65536 + 9 ? 65536 : left;  // never leave a line shorter than "comment \n"
+        header += "comment " + std::string(n - 9, 'x') + "\n";
+        left -= n;
+    }
+    return header + tail;
+}
+
+TEST(PlyLists, BinaryDataAtTheBufferEnd) {
+    // assimp reads the header through a 1 MiB buffer and hands the binary
+    // reader what is left of it: nothing, when the header ends on its last
+    // byte, and the reader crashes reading that nothing (fuzzing found it).
+    const std::string face = '\3' + le32(0) + le32(1) + le32(2);
+    constexpr std::size_t kMiB = std::size_t(1) << 20;
+    ASSERT_EQ(binary_header_of(kMiB).size(), kMiB);
+    EXPECT_EQ(check(binary_header_of(kMiB) + face),
+              "FILE: error: the binary PLY header ends at byte 1048576, the end of assimp 5.2.5's 1 MiB buffer, "
+              "which makes its reader crash");
+    // A byte either way, and the data is read from the buffer or the next block.
+    EXPECT_EQ(check(binary_header_of(kMiB - 1) + face), "(no error)");
+    EXPECT_EQ(check(binary_header_of(kMiB + 1) + face), "(no error)");
+    EXPECT_EQ(check(binary_header_of(kMiB - 1) + face.substr(0, 9)),
+              "FILE: error: a binary PLY list of 3 values at byte " + std::to_string(kMiB) +
+                  ", but only 8 bytes follow (a corrupt or truncated file?)");
+}
+
 }  // namespace
 }  // namespace fh
