@@ -33,7 +33,8 @@
 // to stderr too. firsthit_bench_scaling traces in double unless given
 // --precision float; this traces in float, as Embree does.
 //   firsthit_embree_reference [--threads N] [--runs K] [--max-level K] [--png OUT.png]
-//                             [--bunny FILE.off] [--world] [--placements FILE.csv] [--width 4|8|16] [--verbose]
+//                             [--bunny FILE.off] [--world] [--placements FILE.csv] [--scene FILE]
+//                             [--width 4|8|16] [--verbose]
 // --png writes the bunny's frame (the last icosphere's without the bunny);
 // --bunny: default animations/meshes/bunny00.off of this source tree (bash
 // scripts/fetch_meshes.sh fetches it); missing, the bunny row is left out.
@@ -42,6 +43,8 @@
 // --placements FILE.csv: instead, only the instancing benchmark's scene
 // (scripts/bunny_grid.sh): the bunny placed by each row, as Embree
 // instances (RTC_GEOMETRY_TYPE_INSTANCE) over one mesh scene.
+// --scene FILE: instead, only that firsthit scene's (YAML or glTF) mesh
+// instances, each distinct mesh an Embree scene (scripts/bench_gltf.sh).
 #include <embree3/rtcore.h>
 #include <pmmintrin.h>
 #include <xmmintrin.h>
@@ -61,6 +64,7 @@
 #include <functional>
 #include <limits>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -73,7 +77,9 @@
 #include "meshes/mesh_loader.h"
 #include "images/png_writer.h"
 #include "render/image.h"
+#include "scene/node.h"
 #include "yaml/placements.h"
+#include "yaml/scene_loader.h"
 
 #ifndef FIRSTHIT_SOURCE_DIR
 #define FIRSTHIT_SOURCE_DIR "."
@@ -118,6 +124,14 @@ struct SceneSpec {
     // inverse transpose), one matrix a lane.
     std::vector<glm::dmat4> instances;
     std::vector<std::array<V3, 3>> normal_matrices;  // rows
+    // With instances of several meshes (--scene): each mesh, and the one
+    // each instance places; empty: every instance places the mesh above.
+    struct Part {
+        std::vector<float> vertices;
+        std::vector<std::uint32_t> indices;
+    };
+    std::vector<Part> parts;
+    std::vector<int> instance_part;
 };
 
 const Shade kGrey = shade_of(dvec3(200), 0.1, 0.9);
@@ -191,6 +205,42 @@ SceneSpec instanced_scene(const std::string& mesh_path, const std::string& place
     s.name = "instances" + std::to_string(s.instances.size());
     s.triangles = s.indices.size() / 3 * s.instances.size();
     s.floor_z = -3;
+    s.mesh = kGrey;
+    s.floor = shade_of(dvec3(140, 170, 200), 0.1, 0.9);
+    return s;
+}
+
+// A firsthit scene file's mesh instances (--scene: a YAML scene or a glTF
+// model, read by firsthit's own loaders, its nodes placed): each distinct
+// mesh one Embree scene, each instance an Embree instance of it with the
+// same matrix -- the two levels firsthit traces, on Embree. The floor is the
+// scene's first plane (normal (0, 0, 1)); camera, lights and colours are the
+// benchmark's, as for the bunny.
+SceneSpec scene_instances(const std::string& path) {
+    fh::SceneFile file = fh::load_scene(path);
+    fh::Scene& scene = file.scene;
+    fh::place_nodes(scene);
+    SceneSpec s;
+    s.name = std::filesystem::path(path).stem().string() + "_instances";
+    for (const fh::SceneMesh& m : scene.meshes) {
+        SceneSpec::Part part;
+        for (const dvec3& q : m.mesh->positions) part.vertices.insert(part.vertices.end(), {float(q.x), float(q.y), float(q.z)});
+        for (const auto& tri : m.mesh->triangles) {
+            const auto& p = m.mesh->positions;
+            if (fh::Triangle<double>::make(p[tri[0]], p[tri[1]], p[tri[2]], 0).degenerate()) continue;
+            part.indices.insert(part.indices.end(), {tri[0], tri[1], tri[2]});
+        }
+        s.parts.push_back(std::move(part));
+    }
+    for (const fh::Instance& i : scene.instances) {
+        s.instances.push_back(i.to_world);
+        s.instance_part.push_back(i.mesh);
+        s.triangles += s.parts[size_t(i.mesh)].indices.size() / 3;
+        const glm::dmat3 n = glm::inverseTranspose(glm::dmat3(i.to_world));
+        s.normal_matrices.push_back({to_v3(glm::row(n, 0)), to_v3(glm::row(n, 1)), to_v3(glm::row(n, 2))});
+    }
+    if (s.instances.empty()) throw std::runtime_error(path + ": no mesh instances");
+    s.floor_z = scene.planes.empty() ? -3.0f : float(scene.planes.front().distance);
     s.mesh = kGrey;
     s.floor = shade_of(dvec3(140, 170, 200), 0.1, 0.9);
     return s;
@@ -584,17 +634,23 @@ void on_error(void*, RTCError code, const char* message) {
 // here) placed by one instance geometry per matrix in the scene returned.
 RTCScene new_scene(RTCDevice device, const SceneSpec& spec) {
     if (!spec.instances.empty()) {
-        SceneSpec object = spec;
-        object.instances.clear();
-        object.triangles = spec.indices.size() / 3;  // spec counts them once per instance
-        RTCScene mesh = new_scene(device, object);
-        rtcCommitScene(mesh);
+        // Each mesh in a scene of its own (parts, or the one mesh).
+        std::vector<RTCScene> meshes;
+        for (size_t k = 0; k < std::max<size_t>(spec.parts.size(), 1); ++k) {
+            SceneSpec object;
+            object.vertices = spec.parts.empty() ? spec.vertices : spec.parts[k].vertices;
+            object.indices = spec.parts.empty() ? spec.indices : spec.parts[k].indices;
+            object.triangles = object.indices.size() / 3;  // spec counts them once per instance
+            meshes.push_back(new_scene(device, object));
+            rtcCommitScene(meshes.back());
+        }
         RTCScene top = rtcNewScene(device);
         rtcSetSceneFlags(top, RTC_SCENE_FLAG_NONE);
         rtcSetSceneBuildQuality(top, RTC_BUILD_QUALITY_MEDIUM);
-        for (const glm::dmat4& m : spec.instances) {
+        for (size_t k = 0; k < spec.instances.size(); ++k) {
+            const glm::dmat4& m = spec.instances[k];
             RTCGeometry inst = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
-            rtcSetGeometryInstancedScene(inst, mesh);
+            rtcSetGeometryInstancedScene(inst, meshes[spec.parts.empty() ? 0 : size_t(spec.instance_part[k])]);
             float xfm[12];  // 3 x 4, column major
             for (int c = 0; c < 4; ++c)
                 for (int r = 0; r < 3; ++r) xfm[3 * c + r] = float(m[c][r]);
@@ -603,7 +659,7 @@ RTCScene new_scene(RTCDevice device, const SceneSpec& spec) {
             rtcAttachGeometry(top, inst);
             rtcReleaseGeometry(inst);
         }
-        rtcReleaseScene(mesh);  // the instances hold it
+        for (RTCScene mesh : meshes) rtcReleaseScene(mesh);  // the instances hold them
         return top;
     }
     RTCScene scene = rtcNewScene(device);
@@ -654,7 +710,7 @@ Frame run(RTCDevice device, const SceneSpec& spec, const Blocks& blocks, Workers
 int main(int argc, char** argv) {
     int threads = 2, runs = 9, max_level = 8, width = 0;
     bool verbose = false, unknown = false, world = false;
-    std::string png, placements, bunny = std::string(FIRSTHIT_SOURCE_DIR) + "/animations/meshes/bunny00.off";
+    std::string png, placements, scene_file, bunny = std::string(FIRSTHIT_SOURCE_DIR) + "/animations/meshes/bunny00.off";
     for (int i = 1; i < argc; ++i) {
         const bool has_value = i + 1 < argc;
         if (!std::strcmp(argv[i], "--threads") && has_value) threads = std::max(1, std::atoi(argv[++i]));
@@ -664,13 +720,14 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--width") && has_value) width = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--bunny") && has_value) bunny = argv[++i];
         else if (!std::strcmp(argv[i], "--placements") && has_value) placements = argv[++i];
+        else if (!std::strcmp(argv[i], "--scene") && has_value) scene_file = argv[++i];
         else if (!std::strcmp(argv[i], "--verbose")) verbose = true;
         else if (!std::strcmp(argv[i], "--world")) world = true;
         else unknown = true;
         if (unknown || (width != 0 && width != 4 && width != 8 && width != 16)) {
             std::fprintf(stderr,
                          "usage: firsthit_embree_reference [--threads N] [--runs K] [--max-level K] "
-                         "[--png OUT.png] [--bunny FILE.off] [--world] [--placements FILE.csv] [--width 4|8|16] [--verbose]\n");
+                         "[--png OUT.png] [--bunny FILE.off] [--world] [--placements FILE.csv] [--scene FILE] [--width 4|8|16] [--verbose]\n");
             return 2;
         }
     }
@@ -703,9 +760,10 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     Workers workers(threads);
     Frame last;
-    if (!placements.empty()) {  // the instancing benchmark's scene alone
+    if (!placements.empty() || !scene_file.empty()) {  // the instancing benchmark's scene, or a scene's, alone
         try {
-            last = run(device, instanced_scene(bunny, placements), blocks, workers, runs);
+            last = run(device, scene_file.empty() ? instanced_scene(bunny, placements) : scene_instances(scene_file),
+                       blocks, workers, runs);
             if (!png.empty()) fh::write_png(png, last.image);
         } catch (const std::exception& e) {
             std::fprintf(stderr, "embree_reference: %s\n", e.what());

@@ -7,7 +7,9 @@
 #      YAML scene holding it as `type: gltf`: the bunny's camera, floor,
 #      Lambert + ambient + a directional light with shadows), in float,
 #      against the Embree 3 peer tracing the very same triangles (`firsthit
-#      export` of that scene; bench/embree_reference.cpp --world);
+#      export` of that scene; bench/embree_reference.cpp --world), and the
+#      peer again with the scene's own 115 instances of its 34 meshes as
+#      Embree instances (--scene: the two levels firsthit traces);
 #   3. frames per second of the engine and of the glTF demo movie
 #      (animations/gltf/demo.gltf) beside Blender 3.4's command line
 #      rendering the same files (Cycles, 1 sample, 2 threads; scripts/
@@ -52,6 +54,8 @@ pick() { local prefix=$1; shift; "$firsthit" bench "$@" --threads 2 --runs "$run
     "$firsthit" export "$work/engine_on_floor.yaml" --quiet -o "$work/engine_on_floor.ply"
     "$embree" --threads 2 --runs "$runs" --max-level 0 --world --bunny "$work/engine_on_floor.ply" 2>/dev/null |
       awk -F, 'NR == 2 {print "placed_embree_build_ms: " $3; print "placed_embree_ms_per_frame: " $4}'
+    "$embree" --threads 2 --runs "$runs" --scene "$work/engine_on_floor.yaml" 2>/dev/null |
+      awk -F, 'NR == 2 {print "placed_embree_instances_ms_per_frame: " $4}'
   fi
 
   for f in "$engine" "$demo"; do
