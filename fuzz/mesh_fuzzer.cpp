@@ -7,9 +7,10 @@
 //
 // A PLY input whose first byte also has its top bit set is moved across the
 // 1 MiB mark where assimp's line buffer reads its next block: comment lines
-// go after its second line (the format line) so that the rest starts the
-// next two bytes' value (0 .. 65,535) before the mark. Small inputs reach
-// the block boundary that way, which meshes/ply_lists.cpp replays.
+// go after its second line (the format line), so that the rest of it begins
+// N bytes before the mark, N being its next two bytes (little-endian,
+// 0 .. 65,535). Small inputs reach the block boundary that way, which
+// meshes/ply_lists.cpp replays.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
