@@ -224,9 +224,9 @@ SceneSpec scene_instances(const std::string& path) {
     s.name = std::filesystem::path(path).stem().string() + "_instances";
     for (const fh::SceneMesh& m : scene.meshes) {
         SceneSpec::Part part;
-        for (const dvec3& q : m.mesh->positions) part.vertices.insert(part.vertices.end(), {float(q.x), float(q.y), float(q.z)});
+        const std::vector<dvec3>& p = m.mesh->positions;
+        for (const dvec3& q : p) part.vertices.insert(part.vertices.end(), {float(q.x), float(q.y), float(q.z)});
         for (const auto& tri : m.mesh->triangles) {
-            const auto& p = m.mesh->positions;
             if (fh::Triangle<double>::make(p[tri[0]], p[tri[1]], p[tri[2]], 0).degenerate()) continue;
             part.indices.insert(part.indices.end(), {tri[0], tri[1], tri[2]});
         }
@@ -710,7 +710,8 @@ Frame run(RTCDevice device, const SceneSpec& spec, const Blocks& blocks, Workers
 int main(int argc, char** argv) {
     int threads = 2, runs = 9, max_level = 8, width = 0;
     bool verbose = false, unknown = false, world = false;
-    std::string png, placements, scene_file, bunny = std::string(FIRSTHIT_SOURCE_DIR) + "/animations/meshes/bunny00.off";
+    std::string png, placements, scene_file;
+    std::string bunny = std::string(FIRSTHIT_SOURCE_DIR) + "/animations/meshes/bunny00.off";
     for (int i = 1; i < argc; ++i) {
         const bool has_value = i + 1 < argc;
         if (!std::strcmp(argv[i], "--threads") && has_value) threads = std::max(1, std::atoi(argv[++i]));
@@ -727,7 +728,8 @@ int main(int argc, char** argv) {
         if (unknown || (width != 0 && width != 4 && width != 8 && width != 16)) {
             std::fprintf(stderr,
                          "usage: firsthit_embree_reference [--threads N] [--runs K] [--max-level K] "
-                         "[--png OUT.png] [--bunny FILE.off] [--world] [--placements FILE.csv] [--scene FILE] [--width 4|8|16] [--verbose]\n");
+                         "[--png OUT.png] [--bunny FILE.off] [--world] [--placements FILE.csv] [--scene FILE] "
+                         "[--width 4|8|16] [--verbose]\n");
             return 2;
         }
     }
