@@ -34,6 +34,9 @@
 //   - a binary PLY header that ends on the last byte of its 1 MiB line buffer
 //     leaves its binary reader an empty block, read through a null pointer (a
 //     crash): refused by the same walk.
+//   - its OBJ importer writes past its vertex array for a line statement of
+//     one vertex (heap corruption; fixed in 5.3.0): such statements are
+//     refused first (src/meshes/obj_lines.h).
 #include "meshes/mesh_loader.h"
 
 #include <assimp/DefaultLogger.hpp>
@@ -59,6 +62,7 @@
 
 #include "text/input_error.h"
 #include "meshes/mesh_file_headers.h"
+#include "meshes/obj_lines.h"
 #include "meshes/ply_lists.h"
 #include "meshes/mesh_records.h"
 #include "meshes/mesh_text.h"
@@ -493,6 +497,7 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
         check_ply_lists(path);
     }
     if (format == Format::off) check_off_header(path, size);
+    if (format == Format::obj) check_obj_lines(path);
     try {
         MessageCollector log;
         Assimp::Importer importer;

@@ -1,0 +1,130 @@
+#include "meshes/obj_lines.h"
+
+#include <cstdlib>
+#include <fstream>
+
+#include "text/input_error.h"
+
+namespace fh {
+
+namespace {
+
+bool is_line_end(char c) { return c == '\r' || c == '\n' || c == '\0' || c == '\f'; }
+bool is_space_or_line_end(char c) { return c == ' ' || c == '\t' || is_line_end(c); }
+
+// What getFace makes of a line statement, besides a count of vertices.
+enum : int { kAssimpRefuses = -1, kPastTheLine = -2 };
+
+// The vertices getFace reads for the line statement `line` (its keyword
+// first), or one of the above.
+int line_vertices(const std::string& line, bool texture_coordinates, bool normals) {
+    std::size_t i = 0;
+    // getNextToken: past the keyword, then past spaces (not line ends).
+    while (i < line.size() && !is_space_or_line_end(line[i])) ++i;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    int position = 0, vertices = 0;
+    while (i < line.size()) {
+        const char c = line[i];
+        std::size_t step = 1;
+        if (is_line_end(c)) break;
+        if (c == '/') {
+            ++position;
+        } else if (is_space_or_line_end(c)) {
+            position = 0;
+        } else {
+            const int value = int(std::strtol(line.c_str() + i, nullptr, 10));  // atoi
+            if (value < 0) ++step;
+            for (int digits = value; (digits /= 10) != 0;) ++step;
+            if (position == 1 && !texture_coordinates && normals) position = 2;
+            if (value == 0) return kAssimpRefuses;  // "OBJ: Invalid face index."
+            // reportErrorTokenInFace skips to the next line end, past this
+            // line's, into what assimp's buffer holds from earlier lines.
+            if (position > 2) return kPastTheLine;
+            if (position == 0) ++vertices;
+        }
+        i += step;
+    }
+    return vertices;
+}
+
+}  // namespace
+
+void check_obj_lines(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return;  // the loader says why
+    // The statement being read: its first two characters and its length,
+    // and all of it for a line statement; the physical line it starts on.
+    std::string line;
+    char first = '\0', second = '\0';
+    std::size_t length = 0;
+    int number = 1, starts = 1;
+    bool texture_coordinates = false, normals = false;
+    auto take = [&](char c) {
+        if (length == 0) first = c;
+        if (length == 1) second = c;
+        ++length;
+        if (first == 'l') line += c;
+    };
+    auto untake = [&] {  // the last character taken
+        --length;
+        if (first == 'l') line.pop_back();
+        if (length == 0) first = '\0';
+        if (length == 1) second = '\0';
+    };
+    auto statement_ends = [&] {
+        if (first == 'v' && length >= 2) {
+            texture_coordinates |= second == 't';
+            normals |= second == 'n';
+        }
+        if (first == 'l') {
+            const int n = line_vertices(line, texture_coordinates, normals);
+            const char* why = n == 1 ? "a line statement of one vertex, for which assimp 5.2.5 writes past the end of "
+                                       "its vertex array"
+                              : n == kPastTheLine ? "a line statement with a vertex of more than three indices, which "
+                                                    "assimp 5.2.5 reads on past its line"
+                                                  : nullptr;
+            if (why) throw InputError(path, starts, 1, std::string(why) + " (firsthit draws no lines)");
+        }
+        line.clear();
+        first = second = '\0';
+        length = 0;
+    };
+    // getNextDataLine: "\" before a line end drops both, skips to the next
+    // '\n' and takes the character after it unexamined.
+    enum { kReading, kSkipping, kTaking } state = kReading;
+    bool backslash = false;  // the last character read (and examined) was "\"
+    char chunk[1 << 16];
+    while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+        const std::streamsize n = in.gcount();
+        for (std::streamsize k = 0; k < n; ++k) {
+            const char c = chunk[k];
+            if (c == '\n') ++number;
+            if (state == kSkipping) {
+                if (c == '\n') state = kTaking;
+                continue;
+            }
+            if (state == kTaking) {
+                take(c);
+                state = kReading;
+                backslash = false;
+                continue;
+            }
+            if (backslash && is_line_end(c)) {  // the "\" was taken: untake it
+                untake();
+                state = c == '\n' ? kTaking : kSkipping;
+                backslash = false;
+                continue;
+            }
+            backslash = c == '\\';
+            if (is_line_end(c)) {
+                statement_ends();
+                starts = number;
+                continue;
+            }
+            take(c);
+        }
+    }
+    if (length > 0) statement_ends();
+}
+
+}  // namespace fh

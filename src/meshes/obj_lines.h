@@ -1,0 +1,25 @@
+// OBJ line statements checked as Debian's assimp 5.2.5 will read them,
+// before it does. Its importer counts a line statement of n vertices as
+// 2 (n - 1) mesh vertices but writes n + max(n - 2, 0) of them: for a line
+// of one vertex it writes one more than it counted, and a later line's
+// copied vertex lands past the end of the array (heap corruption: a 54-byte
+// file aborts the process in glibc's malloc; fuzzing found it, and assimp
+// 5.3.0 fixed it). firsthit draws no lines, so such a file is refused.
+//
+// A statement is split into lines as IOStreamBuffer::getNextDataLine does
+// ("\" before a line end joins the next line) and read as
+// ObjFileParser::getFace reads it: each value by atoi, the step past it by
+// its digits. A vertex of more than three indices ("1/2/3/4") makes getFace
+// skip to the next line end -- past the statement's own, into what
+// assimp's line buffer holds from earlier lines: that statement is refused
+// too.
+#pragma once
+
+#include <string>
+
+namespace fh {
+
+// InputError(path, line, 1, ...) for the first line statement above.
+void check_obj_lines(const std::string& path);
+
+}  // namespace fh
