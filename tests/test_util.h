@@ -7,6 +7,8 @@
 #include <fstream>
 #include <string>
 
+#include "text/input_error.h"
+
 namespace fh::test {
 
 // A folder of this test process, created on first use and removed at exit.
@@ -35,6 +37,21 @@ inline std::string write_temp_file(const std::string& name, const std::string& c
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out << content;
     return path.string();
+}
+
+// The formatted InputError that check(path) throws for `content` written
+// to temp_dir()/name, its path shown as FILE; "(no error)" when it throws none.
+template <typename Check>
+std::string file_check_error(const std::string& name, const std::string& content, Check&& check) {
+    const std::string path = write_temp_file(name, content);
+    try {
+        check(path);
+    } catch (const InputError& e) {
+        std::string s = e.formatted();
+        if (s.rfind(path, 0) == 0) s.replace(0, path.size(), "FILE");
+        return s;
+    }
+    return "(no error)";
 }
 
 }  // namespace fh::test

@@ -16,15 +16,7 @@ namespace {
 
 // The formatted error of checking `content` as an .obj, the path shown as FILE.
 std::string check(const std::string& content) {
-    const std::string path = test::write_temp_file("lines.obj", content);
-    try {
-        check_obj_lines(path);
-    } catch (const InputError& e) {
-        std::string s = e.formatted();
-        if (s.rfind(path, 0) == 0) s.replace(0, path.size(), "FILE");
-        return s;
-    }
-    return "(no error)";
+    return test::file_check_error("lines.obj", content, [](const std::string& path) { check_obj_lines(path); });
 }
 
 const std::string kVertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";

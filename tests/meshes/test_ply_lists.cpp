@@ -16,15 +16,7 @@ namespace {
 
 // The formatted error of checking `content` as a .ply, the path shown as FILE.
 std::string check(const std::string& content) {
-    const std::string path = test::write_temp_file("lists.ply", content);
-    try {
-        check_ply_lists(path);
-    } catch (const InputError& e) {
-        std::string s = e.formatted();
-        if (s.rfind(path, 0) == 0) s.replace(0, path.size(), "FILE");
-        return s;
-    }
-    return "(no error)";
+    return test::file_check_error("lists.ply", content, [](const std::string& path) { check_ply_lists(path); });
 }
 
 const std::string kTriangleHeader =
