@@ -3,8 +3,9 @@
 // keeps from earlier lines), the pointer walks of its parser (ParsingUtils,
 // PLY::DOM) and where each value it reads ends (fast_atof). Only what
 // decides where assimp reads, not the values: meshes/ply_lists.cpp uses it
-// to find the list lengths assimp will size lists by. Each function is named
-// after the one it follows.
+// to find the list lengths assimp will size lists by (and meshes/obj_lines.cpp
+// its ParsingUtils character tests). Each function is named after the one it
+// follows.
 #pragma once
 
 #include <algorithm>
@@ -38,6 +39,7 @@ inline std::uint32_t strtoul10(const std::string& text, std::size_t& at) {
 
 inline bool is_line_end(char c) { return c == '\r' || c == '\n' || c == '\0' || c == '\f'; }
 inline bool is_space(char c) { return c == ' ' || c == '\t'; }
+inline bool is_space_or_line_end(char c) { return is_space(c) || is_line_end(c); }
 
 // The bytes at [at, at + n) of a file, n at most a block, through one block
 // kept in memory: the check reads as assimp does, front to back, without

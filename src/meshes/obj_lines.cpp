@@ -3,14 +3,16 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "meshes/assimp_replay.h"
 #include "text/input_error.h"
 
 namespace fh {
 
 namespace {
 
-bool is_line_end(char c) { return c == '\r' || c == '\n' || c == '\0' || c == '\f'; }
-bool is_space_or_line_end(char c) { return c == ' ' || c == '\t' || is_line_end(c); }
+using assimp_replay::is_line_end;
+using assimp_replay::is_space;
+using assimp_replay::is_space_or_line_end;
 
 // What getFace makes of a line statement, besides a count of vertices.
 enum : int { kAssimpRefuses = -1, kPastTheLine = -2 };
@@ -21,7 +23,7 @@ int line_vertices(const std::string& line, bool texture_coordinates, bool normal
     std::size_t i = 0;
     // getNextToken: past the keyword, then past spaces (not line ends).
     while (i < line.size() && !is_space_or_line_end(line[i])) ++i;
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    while (i < line.size() && is_space(line[i])) ++i;
     int position = 0, vertices = 0;
     while (i < line.size()) {
         const char c = line[i];
