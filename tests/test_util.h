@@ -39,11 +39,10 @@ inline std::string write_temp_file(const std::string& name, const std::string& c
     return path.string();
 }
 
-// The formatted InputError that check(path) throws for `content` written
-// to temp_dir()/name, its path shown as FILE; "(no error)" when it throws none.
+// The formatted InputError that check(path) throws, the path shown as
+// FILE; "(no error)" when it throws none.
 template <typename Check>
-std::string file_check_error(const std::string& name, const std::string& content, Check&& check) {
-    const std::string path = write_temp_file(name, content);
+std::string check_error(const std::string& path, Check&& check) {
     try {
         check(path);
     } catch (const InputError& e) {
@@ -52,6 +51,12 @@ std::string file_check_error(const std::string& name, const std::string& content
         return s;
     }
     return "(no error)";
+}
+
+// The same for `content` written to temp_dir()/name.
+template <typename Check>
+std::string file_check_error(const std::string& name, const std::string& content, Check&& check) {
+    return check_error(write_temp_file(name, content), check);
 }
 
 }  // namespace fh::test

@@ -214,14 +214,7 @@ void expect_cube(const MeshData& m) {
 
 // The formatted error of loading `path`, the path shown as FILE.
 std::string error_of(const std::string& path, std::size_t max_triangles = kMaxMeshTriangles) {
-    try {
-        load_mesh(path, max_triangles);
-    } catch (const InputError& e) {
-        std::string s = e.formatted();
-        if (s.rfind(path, 0) == 0) s.replace(0, path.size(), "FILE");
-        return s;
-    }
-    return "(no error)";
+    return test::check_error(path, [&](const std::string& p) { load_mesh(p, max_triangles); });
 }
 
 std::string mesh_error(const std::string& name, const std::string& content) {

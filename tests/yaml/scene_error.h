@@ -11,14 +11,7 @@
 namespace fh::test {
 
 inline std::string error_of_file(const std::string& path) {
-    try {
-        load_scene(path);
-    } catch (const InputError& e) {
-        std::string s = e.formatted();
-        if (s.rfind(path, 0) == 0) s.replace(0, path.size(), "FILE");
-        return s;
-    }
-    return "(no error)";
+    return check_error(path, [](const std::string& p) { load_scene(p); });
 }
 
 // The error of `yaml` written to a temporary scene file called `name`.

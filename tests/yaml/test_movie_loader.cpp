@@ -35,17 +35,10 @@ std::string movie_path(const std::string& yaml) {
 // The formatted error of loading `yaml` as a movie, its path shown as FILE
 // and the movies folder as DIR.
 std::string movie_error(const std::string& yaml) {
-    const std::string path = movie_path(yaml);
-    try {
-        load_movie(path);
-    } catch (const InputError& e) {
-        std::string s = e.formatted();
-        const std::string dir = (test::temp_dir() / "movies").string();
-        if (s.rfind(path, 0) == 0) s.replace(0, path.size(), "FILE");
-        if (const auto at = s.find(dir); at != std::string::npos) s.replace(at, dir.size(), "DIR");
-        return s;
-    }
-    return "(no error)";
+    std::string s = test::check_error(movie_path(yaml), [](const std::string& p) { load_movie(p); });
+    const std::string dir = (test::temp_dir() / "movies").string();
+    if (const auto at = s.find(dir); at != std::string::npos) s.replace(at, dir.size(), "DIR");
+    return s;
 }
 
 // The path animating `property` ("camera.view_point"), or nullptr.
