@@ -359,6 +359,9 @@ Movie load_movie_from_string(const std::string& text, const std::string& path) {
 }
 
 bool is_movie_file(const std::string& path) {
+    // A .gltf is JSON, which reads as YAML, and its "scene" key names the
+    // file's default scene: it is a scene, never a movie.
+    if (is_gltf_file(path)) return false;
     try {
         // The same checked reading as loading: size, text, nesting.
         const YamlReader r(path);

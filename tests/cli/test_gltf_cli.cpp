@@ -123,6 +123,19 @@ TEST(GltfCli, TheDemoInAYamlSceneAndMovie) {
     }
 }
 
+// A .gltf names its default scene with a "scene" key, as the demo does; it
+// is still a scene to a movie, not a movie of its own.
+TEST(GltfCli, AGltfWithASceneKeyIsAMoviesScene) {
+    const fs::path dir = fresh_dir("gltf_scene_key");
+    const std::string demo = source_path("animations/gltf/demo.gltf");
+    ASSERT_NE(slurp(demo).find("\"scene\""), std::string::npos);
+    std::ofstream(dir / "movie.yaml") << "scene: " << demo << "\nfps: 10\nseconds: 1\nanimate:\n  nodes.blob.scale: 2\n";
+    const auto r = run_firsthit("render " + (dir / "movie.yaml").string() + " --frame 3 --resolution 40x30 -o " +
+                                (dir / "out.png").string());
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "out.png"));
+}
+
 // A movie on the file at 10 fps: frame 5 is 0.5 s, where the file's own
 // animation has base at (0,1.5,0). A path moves node "arm" from (1,2,3) to
 // (1,2,5) over frames 0..10, so it is at (1,2,4):
