@@ -29,7 +29,8 @@ public:
             if (moved.world)
                 geometry = std::make_shared<const typename decltype(geometry)::element_type>(geometry->refit(frame, pool));
             auto instances = flat->instances;
-            if (moved.instances && instances) instances = instances->moved(frame, pool);
+            using Instances = std::remove_const_t<typename decltype(instances)::element_type>;
+            if (moved.instances && instances) instances = Instances::moved(instances, frame, pool);
             return std::make_unique<Flat>(Flat::build(frame, plan, std::move(geometry), std::move(instances)));
         };
         if (float_) p->float_ = next(float_);
@@ -52,10 +53,6 @@ public:
     std::size_t instances() const override {
         if (float_) return float_->instances ? float_->instances->instances.size() : 0;
         return double_->instances ? double_->instances->instances.size() : 0;
-    }
-    double instances_update_ms() const override {
-        if (float_) return float_->instances ? float_->instances->update_ms : 0;
-        return double_->instances ? double_->instances->update_ms : 0;
     }
 
 private:

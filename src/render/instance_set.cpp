@@ -1,7 +1,6 @@
 #include "render/instance_set.h"
 
-#include <chrono>
-
+#include <cstring>
 
 namespace fh {
 
@@ -66,7 +65,6 @@ FlatInstance<T> flat_instance(const Instance& i, int cutout) {
 template <typename T>
 void place_instances(const Scene& scene, const std::vector<Aabb>& mesh_boxes, const InstanceSet<T>* previous,
                      InstanceSet<T>& set, ThreadPool* pool) {
-    const auto start = std::chrono::steady_clock::now();
     set.instances.clear();
     set.instances.reserve(scene.instances.size());
     set.cutouts.clear();
@@ -95,7 +93,14 @@ void place_instances(const Scene& scene, const std::vector<Aabb>& mesh_boxes, co
         // Every leaf lists its instance (no triangle runs at this level).
         set.walk_nodes = walk_nodes_of<T>(set.bvh, PrimitiveIds{int(boxes.size()), 0, 0}, &set.walk_from);
     }
-    set.update_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The same bits, not just equal values: a -0 where a +0 was turns a ray
+// direction's reciprocal from +inf to -inf.
+template <typename T>
+bool same_bits(const FlatInstance<T>& a, const FlatInstance<T>& b) {
+    return std::memcmp(&a.to_object, &b.to_object, 3 * sizeof(AffineMap<T>)) == 0 && a.mesh == b.mesh &&
+           a.material == b.material && a.cutout == b.cutout;
 }
 
 std::vector<Aabb> boxes_of_meshes(const Scene& scene) {
@@ -122,10 +127,19 @@ std::shared_ptr<const InstanceSet<T>> InstanceSet<T>::build(const Scene& scene, 
 }
 
 template <typename T>
-std::shared_ptr<const InstanceSet<T>> InstanceSet<T>::moved(const Scene& moved, ThreadPool* pool) const {
+std::shared_ptr<const InstanceSet<T>> InstanceSet<T>::moved(const std::shared_ptr<const InstanceSet>& previous,
+                                                            const Scene& moved, ThreadPool* pool) {
+    // A movie's instances stand still between its keys, or until its wave
+    // reaches them: nothing to refit then. (A material's cutout cannot be
+    // animated, so each instance's index into the cutouts stays.)
+    const BigArray<FlatInstance<T>>& before = previous->instances;
+    bool still = moved.deformations.empty() && moved.instances.size() == before.size();
+    for (size_t k = 0; still && k < before.size(); ++k)
+        still = same_bits(flat_instance<T>(moved.instances[k], before[k].cutout), before[k]);
+    if (still) return previous;
     auto set = std::make_shared<InstanceSet<T>>();
-    set->meshes = meshes;
-    set->mesh_boxes = mesh_boxes;
+    set->meshes = previous->meshes;
+    set->mesh_boxes = previous->mesh_boxes;
     // Morphed and skinned meshes: the same triangles moved, so the same
     // tree with its boxes refitted (scene/deformation.h).
     for (const Deformation& d : moved.deformations) {
@@ -135,7 +149,7 @@ std::shared_ptr<const InstanceSet<T>> InstanceSet<T>::moved(const Scene& moved, 
         set->meshes[m] = std::make_shared<const FlatGeometry<T>>(set->meshes[m]->refit(mesh_scene(mesh), pool));
         set->mesh_boxes[m] = mesh_box(mesh);
     }
-    place_instances(moved, set->mesh_boxes, this, *set, pool);
+    place_instances(moved, set->mesh_boxes, previous.get(), *set, pool);
     return set;
 }
 

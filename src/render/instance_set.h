@@ -66,7 +66,6 @@ struct InstanceSet {
     Bvh bvh;  // over the instances' world boxes (a leaf: one instance)
     BigArray<WalkNode<T>> walk_nodes;
     std::vector<std::int32_t> walk_from;  // each walk node's BVH node (walk_nodes_of)
-    double update_ms = 0;  // the last build of the instances and their BVH (not the meshes)
 
     bool empty() const { return instances.empty(); }
 
@@ -74,8 +73,10 @@ struct InstanceSet {
     static std::shared_ptr<const InstanceSet> build(const Scene& scene, ThreadPool* pool = nullptr);
     // The same meshes with the instances where `moved` places them (a
     // movie's frame): only matrices, boxes and the top BVH are redone, and
-    // the trees of the meshes it deforms refitted.
-    std::shared_ptr<const InstanceSet> moved(const Scene& moved, ThreadPool* pool = nullptr) const;
+    // the trees of the meshes it deforms refitted. `previous` itself when
+    // nothing moved or deforms: its top BVH is not refitted.
+    static std::shared_ptr<const InstanceSet> moved(const std::shared_ptr<const InstanceSet>& previous,
+                                                    const Scene& moved, ThreadPool* pool = nullptr);
 };
 
 extern template struct InstanceSet<float>;

@@ -42,7 +42,6 @@ const EffectPlan& PreparedScene::plan() const { return tracer_->plan(); }
 double PreparedScene::bvh_build_ms() const { return tracer_->bvh_build_ms(); }
 int PreparedScene::bvh_nodes() const { return tracer_->bvh_nodes(); }
 size_t PreparedScene::instances() const { return tracer_->instances(); }
-double PreparedScene::instances_update_ms() const { return tracer_->instances_update_ms(); }
 
 FrameResult render_frame(const Scene& scene, const Camera& camera, const RenderSettings& settings,
                          ThreadPool* pool) {

@@ -46,7 +46,6 @@ public:
     double bvh_build_ms() const;                   // of which the BVH
     int bvh_nodes() const;
     size_t instances() const;       // placed meshes (the second level)
-    double instances_update_ms() const;  // their matrices and top BVH, last built
 
 private:
     PreparedScene() = default;

@@ -31,7 +31,6 @@ public:
     virtual double bvh_build_ms() const = 0;
     virtual int bvh_nodes() const = 0;
     virtual std::size_t instances() const = 0;
-    virtual double instances_update_ms() const = 0;
 };
 
 // One level's way in: the scene flattened for `settings` (precision,

@@ -7,6 +7,7 @@
 // instanced closed mesh's vertices and edges slipping through it.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -238,7 +239,8 @@ TYPED_TEST(InstanceWalk, CoincidentInstancesGoToTheFirst) {
 }
 
 // Rays from outside at every vertex and along every edge of a closed mesh,
-// instanced turned, scaled unevenly and mirrored: each must hit it.
+// instanced turned, scaled unevenly and mirrored: each must hit it, traced
+// alone and as lanes of packets (each walk has its own code).
 TYPED_TEST(InstanceWalk, NoRayLeaksThroughAClosedMeshUnderAnyInstance) {
     using T = TypeParam;
     std::mt19937 rng(3);
@@ -248,7 +250,7 @@ TYPED_TEST(InstanceWalk, NoRayLeaksThroughAClosedMeshUnderAnyInstance) {
     scene.meshes.push_back({"ball", mesh});
     for (int i = 0; i < 6; ++i) scene.instances.push_back({0, 0, random_placement(rng, i % 2 == 1)});
     const TwoLevels<T> g(scene);
-    long rays = 0, leaks = 0;
+    std::vector<Ray<T>> rays;
     std::uniform_real_distribution<double> far(5, 40), wobble(-0.5, 0.5);
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const glm::dmat4& m = scene.instances[i].to_world;
@@ -264,13 +266,51 @@ TYPED_TEST(InstanceWalk, NoRayLeaksThroughAClosedMeshUnderAnyInstance) {
                     // (the sphere's is p itself), never grazing.
                     const dvec3 out = glm::normalize(normals * p) + 0.3 * dvec3(wobble(rng), wobble(rng), wobble(rng));
                     const dvec3 origin = target + far(rng) * glm::normalize(out);
-                    const Ray<T> ray{Vec3<T>(origin), Vec3<T>(glm::normalize(target - origin))};
-                    ++rays;
-                    leaks += !closest_hit(g.world, g.instances.get(), ray).found();
+                    rays.push_back({Vec3<T>(origin), Vec3<T>(glm::normalize(target - origin))});
                 }
     }
-    EXPECT_GT(rays, 20'000);
-    EXPECT_EQ(leaks, 0) << "of " << rays << " rays";
+    long leaks = 0, packet_leaks = 0;
+    for (const Ray<T>& ray : rays) leaks += !closest_hit(g.world, g.instances.get(), ray).found();
+    // The same rays kLanes at a time: neighbours in the list aim at one
+    // triangle's corners from different sides, so the packets are incoherent.
+    const int lanes = kLanes<T>;
+    const size_t whole = rays.size() / size_t(lanes) * size_t(lanes);
+    for (size_t first = 0; first < whole; first += size_t(lanes)) {
+        RayPacket<T> p;
+        for (int lane = 0; lane < lanes; ++lane) {
+            const Ray<T>& r = rays[first + size_t(lane)];
+            p.origin.x[lane] = r.origin.x, p.origin.y[lane] = r.origin.y, p.origin.z[lane] = r.origin.z;
+            p.direction.x[lane] = r.direction.x, p.direction.y[lane] = r.direction.y, p.direction.z[lane] = r.direction.z;
+        }
+        LaneInts<T> instance;
+        const HitLanes<T> h = closest_hits(g.world, g.instances.get(), p, first_lanes<T>(lanes), instance);
+        for (int lane = 0; lane < lanes; ++lane) packet_leaks += h.prim[lane] == kNoHit;
+    }
+    EXPECT_GT(rays.size(), 20'000u);
+    EXPECT_EQ(leaks, 0) << "of " << rays.size() << " rays traced alone";
+    EXPECT_EQ(packet_leaks, 0) << "of " << whole << " rays traced in packets";
+}
+
+// A movie's frame where no instance moved keeps the previous frame's set, its
+// top BVH not refitted; one instance moved gives a new set with that
+// instance's maps and box, the others' to the bit.
+TYPED_TEST(InstanceWalk, AFrameWhereNothingMovedKeepsTheInstances) {
+    using T = TypeParam;
+    std::mt19937 rng(5);
+    Scene scene = instanced_scene(rng, 20, sphere_mesh());
+    const auto first = InstanceSet<T>::build(scene);
+    EXPECT_EQ(InstanceSet<T>::moved(first, scene), first);
+    scene.instances[7].to_world = glm::translate(glm::dmat4(1.0), {100, 0, 0}) * scene.instances[7].to_world;
+    const auto second = InstanceSet<T>::moved(first, scene);
+    ASSERT_NE(second, first);
+    ASSERT_EQ(second->instances.size(), first->instances.size());
+    for (size_t k = 0; k < first->instances.size(); ++k) {
+        const FlatInstance<T>&a = second->instances[k], &b = first->instances[k];
+        EXPECT_EQ(std::memcmp(&a.to_object, &b.to_object, 3 * sizeof(AffineMap<T>)) == 0, k != 7) << k;
+    }
+    EXPECT_GT(second->bvh.nodes.front().hi[0], 90.0f);  // the root box reaches the moved instance
+    EXPECT_LT(first->bvh.nodes.front().hi[0], 20.0f);
+    EXPECT_EQ(InstanceSet<T>::moved(second, scene), second);
 }
 
 // A mirrored instance's hit points and normals, as shading finds them,
