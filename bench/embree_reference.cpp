@@ -197,7 +197,7 @@ SceneSpec instanced_scene(const std::string& mesh_path, const std::string& place
             continue;
         s.indices.insert(s.indices.end(), {tri[0], tri[1], tri[2]});
     }
-    for (const fh::Transform& t : fh::load_placements(placements)) {
+    for (const fh::Transform& t : fh::load_placements(placements).rows) {
         s.instances.push_back(t.matrix());
         const glm::dmat3 n = glm::inverseTranspose(glm::dmat3(s.instances.back()));
         s.normal_matrices.push_back({to_v3(glm::row(n, 0)), to_v3(glm::row(n, 1)), to_v3(glm::row(n, 2))});

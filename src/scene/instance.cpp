@@ -1,6 +1,8 @@
 #include "scene/instance.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -24,13 +26,27 @@ bool is_finite(const glm::dmat4& m) {
 
 std::string unusable_transform(const glm::dmat4& m) {
     if (!is_finite(m)) return "the transform is not finite";
-    // Relative to the columns' sizes, so a uniformly tiny or huge scale is fine.
     const glm::dmat3 a(m);
-    const double size = glm::length(a[0]) * glm::length(a[1]) * glm::length(a[2]);
-    const double det = glm::determinant(a);
-    if (!(size > 0) || !std::isfinite(size) || !(std::abs(det) > 1e-12 * size))
+    dvec3 unit[3];
+    for (int c = 0; c < 3; ++c) {
+        // Divided by its largest component first, so that its square
+        // neither underflows (1e-200) nor overflows (1e200).
+        const double largest = std::max({std::abs(a[c].x), std::abs(a[c].y), std::abs(a[c].z)});
+        const double length = largest > 0 ? largest * glm::length(a[c] / largest) : 0.0;
+        if (!(length > 0)) return "the transform is singular (it flattens space: no inverse)";
+        // The tracer keeps an instance's maps in float too: a ray's direction
+        // through them, squared, must stay inside float's range (1e38).
+        if (!(length >= kMinTransformScale && length <= kMaxTransformScale)) {
+            char scale[32];
+            std::snprintf(scale, sizeof scale, "%g", length);
+            return std::string("the transform scales by ") + scale + " along an axis; the limit is 1e-12 to 1e12";
+        }
+        unit[c] = a[c] / length;
+    }
+    // The volume of the unit columns' box: 0 when they lie in a plane,
+    // whatever the scale.
+    if (!(std::abs(glm::determinant(glm::dmat3(unit[0], unit[1], unit[2]))) > 1e-12))
         return "the transform is singular (it flattens space: no inverse)";
-    if (!is_finite(glm::inverse(m))) return "the transform has no finite inverse";
     return "";
 }
 

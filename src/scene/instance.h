@@ -51,8 +51,13 @@ std::vector<glm::dmat4> group_matrices(const std::vector<Group>& groups);
 // Every element of `m` is finite.
 bool is_finite(const glm::dmat4& m);
 
-// Why `m` cannot place anything -- not finite, or singular (no inverse in
-// double) -- or empty when it can.
+// How far a transform may scale along any axis: the float tracer squares
+// directions carried through an instance's maps (and their inverses).
+inline constexpr double kMinTransformScale = 1e-12, kMaxTransformScale = 1e12;
+
+// Why `m` cannot place anything -- not finite, scaling an axis outside
+// kMin/kMaxTransformScale, or singular (its axes in a plane) -- or empty
+// when it can.
 std::string unusable_transform(const glm::dmat4& m);
 
 }  // namespace fh

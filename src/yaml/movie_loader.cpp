@@ -273,6 +273,29 @@ Path read_path(const YamlReader& r, const MapReader::Entry& entry, const Target&
     return read_toward(r, m.value("toward"), movie);
 }
 
+// A group holding a sphere, at any depth, scales by one number (the scene
+// loader refuses other scales: a sphere would be an ellipsoid). Keys of
+// x = y = z keep every frame between them even too.
+void check_sphere_scales(const YamlReader& r, const MapReader::Entry& e, const Animation& a, const Scene& scene) {
+    if (a.target.property != Property::transform_scale) return;
+    const NamedSurface& target = scene.named_surfaces[a.target.index];
+    if (target.kind != SurfaceKind::group) return;
+    const bool holds_sphere = std::any_of(scene.named_surfaces.begin(), scene.named_surfaces.end(), [&](const NamedSurface& s) {
+        if (s.kind != SurfaceKind::sphere) return false;
+        for (int g = s.group; g >= 0; g = scene.groups[size_t(g)].parent)
+            if (size_t(g) == target.index) return true;
+        return false;
+    });
+    if (!holds_sphere) return;
+    auto even = [](const dvec3& v) { return v.x == v.y && v.y == v.z; };
+    const Keyframes* keys = std::get_if<Keyframes>(&a.path);
+    const bool ok = keys ? std::all_of(keys->keys.begin(), keys->keys.end(), [&](const Keyframe& k) { return even(k.value); })
+                         : even(std::get<dvec3>(a.path));
+    if (!ok)
+        r.fail(e.value, "'" + a.target.path + "' must scale by one number: group '" + target.name +
+                            "' holds a sphere, which an uneven scale would make an ellipsoid");
+}
+
 void read_animate(const YamlReader& r, const YAML::Node& node, Movie& movie) {
     if (node.IsNull()) return;
     const MapReader m(r, node, "'animate'", {});
@@ -291,6 +314,7 @@ void read_animate(const YamlReader& r, const YAML::Node& node, Movie& movie) {
                 r.fail(e.key_node, "'" + t.path + "': animate the angle in degrees or in radians, not both");
         const YAML::Mark mark = e.key_node.Mark();
         movie.animations.push_back({t, read_path(r, e, t, movie), mark.line + 1, mark.column + 1});
+        check_sphere_scales(r, e, movie.animations.back(), movie.scene);
     }
 }
 

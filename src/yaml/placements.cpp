@@ -41,10 +41,12 @@ class Table {
 public:
     Table(const std::string& text, std::string file) : text_(text), file_(std::move(file)) {}
 
-    std::vector<Transform> read() {
-        std::vector<Transform> rows;
+    Placements read() {
+        Placements rows;
         bool header = true;
-        for (size_t at = 0; at < text_.size();) {
+        // A byte order mark, as spreadsheets write: not part of the header.
+        const size_t start = text_.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+        for (size_t at = start; at < text_.size();) {
             size_t end = text_.find('\n', at);
             if (end == std::string::npos) end = text_.size();
             ++line_;
@@ -56,10 +58,11 @@ public:
                 header = false;
                 continue;
             }
-            if (rows.size() == kMaxInstances)
+            if (rows.rows.size() == kMaxInstances)
                 throw InputError(file_, line_, 1, "more than " + std::to_string(kMaxInstances) +
                                                       " placements (the limit: what the tracer holds in ~1 GB)");
-            rows.push_back(read_row(line));
+            rows.rows.push_back(read_row(line));
+            rows.lines.push_back(line_);
         }
         if (header) throw InputError(file_, "empty placements file: expected a header row such as 'tx,ty,tz'");
         return rows;
@@ -112,12 +115,18 @@ private:
         return t;
     }
 
+    // A number as YAML writes one (docs/format.md, section 1): a leading
+    // '+' allowed, one past a double's range not finite.
     double number(const Field& f, const std::string& column) const {
+        std::string_view text = f.text;
+        if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
         double v = 0;
-        const char* end = f.text.data() + f.text.size();
-        const auto r = std::from_chars(f.text.data(), end, v);
-        if (f.text.empty() || r.ec != std::errc() || r.ptr != end)
+        const char* end = text.data() + text.size();
+        const auto r = std::from_chars(text.data(), end, v);
+        if (text.empty() || r.ptr != end || (r.ec != std::errc() && r.ec != std::errc::result_out_of_range))
             fail(f.column, "'" + column + "' must be a number, got '" + std::string(f.text) + "'");
+        // Out of range: too large (not finite), or too small (0 or a denormal).
+        if (r.ec == std::errc::result_out_of_range) v = std::strtod(std::string(text).c_str(), nullptr);
         if (!std::isfinite(v)) fail(f.column, "'" + column + "' must be finite, got " + std::string(f.text));
         return v;
     }
@@ -133,12 +142,12 @@ private:
 
 }  // namespace
 
-std::vector<Transform> parse_placements(const std::string& text, const std::string& file) {
+Placements parse_placements(const std::string& text, const std::string& file) {
     check_input_text(file, text, kMaxPlacementsBytes);
     return Table(text, file).read();
 }
 
-std::vector<Transform> load_placements(const std::string& path) {
+Placements load_placements(const std::string& path) {
     const std::string text = read_input_file(path, kMaxPlacementsBytes);
     return Table(text, path).read();
 }

@@ -16,11 +16,19 @@
 namespace fh {
 
 // A placements file may hold kMaxInstances rows (scene/instance.h), and be
-// this large: 4 million rows of ten columns with room to spare.
-inline constexpr std::size_t kMaxPlacementsBytes = std::size_t(256) << 20;
+// this large: 4 million rows of eight numbers written to full precision
+// (up to 25 characters each) with room to spare.
+inline constexpr std::size_t kMaxPlacementsBytes = std::size_t(1) << 30;
 
-std::vector<Transform> load_placements(const std::string& path);
+// The rows, each with its line in the file (for errors found later, once a
+// row is composed with its set's transform and groups).
+struct Placements {
+    std::vector<Transform> rows;
+    std::vector<int> lines;
+};
+
+Placements load_placements(const std::string& path);
 // The same from text in memory (`file` names it in errors; tests).
-std::vector<Transform> parse_placements(const std::string& text, const std::string& file);
+Placements parse_placements(const std::string& text, const std::string& file);
 
 }  // namespace fh

@@ -190,9 +190,8 @@ SceneFile load_scene_text(const std::string* text, const std::string& path) {
         Scene& scene = file.scene;
         // Materials first, whatever the file's order: surfaces refer to them.
         read_materials(r, block(top, "materials"), scene);
-        read_meshes(r, block(top, "meshes"), scene);
         std::vector<std::string> gltf_warnings;
-        read_surfaces(r, block(top, "surfaces"), scene, file.animations, gltf_warnings);
+        read_meshes_and_surfaces(r, block(top, "meshes"), block(top, "surfaces"), scene, file.animations, gltf_warnings);
         if (!scene.vertex_normals.empty()) scene.vertex_normals.resize(scene.triangles.size());
         read_lights(r, block(top, "lights"), scene);
         // The file's own cameras first (the first listed is the default),

@@ -11,6 +11,7 @@
 
 #include "gltf/gltf_loader.h"
 #include "meshes/mesh_loader.h"
+#include "text/input_error.h"
 #include "yaml/map_reader.h"
 #include "yaml/placements.h"
 
@@ -154,7 +155,7 @@ private:
         const int material = material_index(m, scene_);
         if (is_mesh && m.has("transform")) named.transform = read_transform(r_, m.value("transform"));
         const glm::dmat4 world = place.world * named.transform.matrix();
-        if (place.group >= 0) check_usable(m, world);
+        if (place.group >= 0 || is_mesh) check_usable(m, world);
         PlacedMesh placed;
         Mesh mesh = is_mesh ? read_mesh(m, material, place.group < 0 ? named.transform.matrix() : world, placed)
                             : read_triangle(m, material);
@@ -205,7 +206,9 @@ private:
         named.kind = SurfaceKind::instances;
         const int mesh = mesh_index(m), material = material_index(m, scene_);
         if (m.has("transform")) named.transform = read_transform(r_, m.value("transform"));
-        const std::vector<Transform> rows = load_placements(relative(m, "placements").string());
+        const std::string csv = relative(m, "placements").string();
+        const Placements placements = load_placements(csv);
+        const std::vector<Transform>& rows = placements.rows;
         if (scene_.instances.size() + rows.size() > kMaxInstances)
             r_.fail(m.value("placements"), "more than " + std::to_string(kMaxInstances) + " instances in the scene");
         auto rows_matrices = std::make_shared<std::vector<glm::dmat4>>();
@@ -217,7 +220,7 @@ private:
             rows_matrices->push_back(rows[k].matrix());
             const glm::dmat4 to_world = world * rows_matrices->back();
             if (const std::string why = unusable_transform(to_world); !why.empty())
-                r_.fail(m.value("placements"), "row " + std::to_string(k + 1) + " of the placements: " + why);
+                throw InputError(csv, placements.lines[k], 1, why + " (the row placed by its set and groups)");
             scene_.instances.push_back({mesh, material, to_world});
         }
         // The rows are kept only where a movie may move the set, or its group.
@@ -277,9 +280,13 @@ private:
         std::vector<std::string> names;
         for (const SceneMesh& s : scene_.meshes) names.push_back(s.name);
         const std::string hint = closest_match(name, names);
-        r_.fail(node, "undefined mesh '" + name + "'" +
-                          (hint.empty() ? " (meshes are named in the scene's 'meshes:' section)"
-                                        : " (did you mean '" + hint + "'?)"));
+        if (!hint.empty()) r_.fail(node, "undefined mesh '" + name + "' (did you mean '" + hint + "'?)");
+        if (names.empty()) r_.fail(node, "undefined mesh '" + name + "' (meshes are named in the scene's 'meshes:' section)");
+        // None close: the names there are (the first few).
+        std::string known;
+        for (size_t i = 0; i < names.size() && i < 4; ++i) known += (i ? ", " : "") + names[i];
+        if (names.size() > 4) known += ", ...";
+        r_.fail(node, "undefined mesh '" + name + "' (the scene's meshes: " + known + ")");
     }
 
     void check_usable(const MapReader& m, const glm::dmat4& to_world) const {
@@ -345,13 +352,11 @@ int material_index(const MapReader& m, const Scene& scene) {
     return static_cast<int>(it - names.begin());
 }
 
-void read_meshes(const YamlReader& reader, const YAML::Node& node, Scene& scene) {
-    if (!node.IsNull()) SurfaceReader(reader, scene).read_meshes(node);
-}
-
-void read_surfaces(const YamlReader& reader, const YAML::Node& node, Scene& scene,
-                   std::vector<NodeAnimation>& animations, std::vector<std::string>& warnings) {
-    SurfaceReader(reader, scene, &animations, &warnings).read_list(node, Place{});
+void read_meshes_and_surfaces(const YamlReader& reader, const YAML::Node& meshes, const YAML::Node& surfaces,
+                              Scene& scene, std::vector<NodeAnimation>& animations, std::vector<std::string>& warnings) {
+    SurfaceReader surfaces_reader(reader, scene, &animations, &warnings);
+    if (!meshes.IsNull()) surfaces_reader.read_meshes(meshes);
+    surfaces_reader.read_list(surfaces, Place{});
 }
 
 }  // namespace fh

@@ -15,13 +15,12 @@ namespace fh {
 
 class MapReader;
 
-// The `meshes:` map: each file read once, in its own space.
-void read_meshes(const YamlReader& reader, const YAML::Node& node, Scene& scene);
-
-// The `surfaces:` list, after the materials and meshes. The glTF files it
-// places add their animations and warnings to these.
-void read_surfaces(const YamlReader& reader, const YAML::Node& node, Scene& scene,
-                   std::vector<NodeAnimation>& animations, std::vector<std::string>& warnings);
+// The `meshes:` map (each mesh in its own space), then the `surfaces:` list,
+// after the materials: a file is read once, however many entries of either
+// name it. The glTF files the surfaces place add their animations and
+// warnings to these.
+void read_meshes_and_surfaces(const YamlReader& reader, const YAML::Node& meshes, const YAML::Node& surfaces,
+                              Scene& scene, std::vector<NodeAnimation>& animations, std::vector<std::string>& warnings);
 
 // A `transform:` map (scene/mesh.h): scale, then rotate, then translate.
 Transform read_transform(const YamlReader& reader, const YAML::Node& node);

@@ -89,10 +89,29 @@ TEST(InstancesCli, EachMistakeIsOneLineAndNothingWritten) {
     EXPECT_EQ(error_of("nan_scale", kMeshes + "surfaces:\n  - {type: instance, mesh: ball, material: grey, "
                                               "transform: {scale: .nan}}\n"),
               "DIR/scene.yaml:14:69: error: 'scale' must be finite");
-    // Fine alone, singular together: (1e-60 x 1e-60)^3 underflows to 0.
-    EXPECT_EQ(error_of("singular", kMeshes + "surfaces:\n  - {type: group, transform: {scale: 1e-60}, surfaces: "
-                                             "[{type: instance, mesh: ball, material: grey, transform: {scale: 1e-60}}]}\n"),
-              "DIR/scene.yaml:14:113: error: the transform is singular (it flattens space: no inverse)");
+    // Fine alone, too small together: 1e-7 x 1e-7 is past the 1e-12 limit.
+    EXPECT_EQ(error_of("too_small", kMeshes + "surfaces:\n  - {type: group, transform: {scale: 1e-7}, surfaces: "
+                                              "[{type: instance, mesh: ball, material: grey, transform: {scale: 1e-7}}]}\n"),
+              "DIR/scene.yaml:14:112: error: the transform scales by 1e-14 along an axis; the limit is 1e-12 to 1e12");
+    EXPECT_EQ(error_of("too_large", kMeshes + "surfaces:\n  - {type: group, transform: {scale: 1e60}, surfaces: "
+                                              "[{type: instance, mesh: ball, material: grey}]}\n"),
+              "DIR/scene.yaml:14:30: error: the transform scales by 1e+60 along an axis; the limit is 1e-12 to 1e12");
+    // A mesh placed in the world is checked as well as one in a group.
+    EXPECT_EQ(error_of("world_mesh", "surfaces:\n  - {type: mesh, file: ball.off, material: grey, "
+                                     "transform: {scale: 1e-200}}\n"),
+              "DIR/scene.yaml:12:61: error: the transform scales by 1e-200 along an axis; the limit is 1e-12 to 1e12");
+    // A row that is fine alone but not under its set's transform: its own line.
+    EXPECT_EQ(error_of("placed_row", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
+                                               "placements: rows.csv, transform: {scale: 1e-6}}\n",
+                       "tx,ty,tz,scale\n0,0,0,1\n\n1,2,3,1e-7\n"),
+              "DIR/rows.csv:4:1: error: the transform scales by 1e-13 along an axis; the limit is 1e-12 to 1e12 "
+              "(the row placed by its set and groups)");
+    EXPECT_EQ(error_of("huge_row", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
+                                             "placements: rows.csv}\n",
+                       "tx,ty,tz\n0,0,+1e999\n"),
+              "DIR/rows.csv:2:5: error: 'tz' must be finite, got +1e999");
+    EXPECT_EQ(error_of("far_name", kMeshes + "surfaces:\n  - {type: instance, mesh: zzzzzz, material: grey}\n"),
+              "DIR/scene.yaml:14:28: error: undefined mesh 'zzzzzz' (the scene's meshes: ball)");
     EXPECT_EQ(error_of("twice", kMeshes + "surfaces:\n  - {type: instance, name: a, mesh: ball, material: grey}\n"
                                           "  - {type: group, name: a}\n"),
               "DIR/scene.yaml:15:25: error: a second surface named 'a'");
@@ -100,6 +119,49 @@ TEST(InstancesCli, EachMistakeIsOneLineAndNothingWritten) {
                                         "[{type: sphere, center: [0, 0, 0], radius: 1, material: red}]}\n"),
               "DIR/scene.yaml:12:61: error: a sphere in a group scaled unevenly would be an ellipsoid: scale the "
               "group (and those around it) by one number");
+}
+
+// A spreadsheet's CSV: a byte order mark, '+' signs, numbers too small for
+// a double (0); each row as written.
+TEST(InstancesCli, PlacementsAsSpreadsheetsWriteThem) {
+    const fs::path dir = scene_dir("spreadsheet_rows", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, "
+                                   "material: grey, placements: rows.csv}\n",
+                                   "\xEF\xBB\xBFtx,ty,tz,scale\n+1,-2,+3e0,+0.5\n1e-999,0,0,1\n");
+    const Scene s = load_scene((dir / "scene.yaml").string()).scene;
+    ASSERT_EQ(s.instances.size(), 2u);
+    EXPECT_EQ(dvec3(s.instances[0].to_world[3]), dvec3(1, -2, 3));
+    EXPECT_EQ(s.instances[0].to_world[0][0], 0.5);
+    EXPECT_EQ(dvec3(s.instances[1].to_world[3]), dvec3(0, 0, 0));
+}
+
+// A file named by 'meshes:' and by a type: mesh surface is read once.
+TEST(InstancesCli, AMeshFileIsReadOnceWhateverNamesIt) {
+    const fs::path dir = scene_dir("mesh_read_once", kMeshes + "surfaces:\n  - {type: instance, mesh: ball, material: grey}\n"
+                                   "  - {type: mesh, file: ball.off, material: red}\n");
+    const Scene s = load_scene((dir / "scene.yaml").string()).scene;
+    EXPECT_EQ(s.mesh_files, 1);
+    EXPECT_EQ(s.instances.size(), 1u);
+    EXPECT_EQ(s.triangles.size(), 80u);
+}
+
+// A movie may not scale a group holding a sphere unevenly (the scene may
+// not either); evenly, or a group without spheres, it may.
+TEST(InstancesCli, AMovieScalesAGroupWithASphereEvenly) {
+    const fs::path dir = scene_dir("movie_sphere_scale", kMeshes + "surfaces:\n"
+        "  - {type: group, name: g, surfaces: [{type: group, surfaces: [{type: sphere, center: [0, 0, 0], radius: 1, material: red}]}]}\n"
+        "  - {type: group, name: h, surfaces: [{type: instance, mesh: ball, material: grey}]}\n");
+    auto run = [&](const std::string& animate) {
+        std::ofstream(dir / "movie.yaml") << "scene: scene.yaml\nfps: 10\nseconds: 1\nanimate:\n  " << animate << "\n";
+        fs::remove(dir / "x.png");
+        return run_firsthit("render " + (dir / "movie.yaml").string() + " --frame 5 -o " + (dir / "x.png").string());
+    };
+    const auto uneven = run("surfaces.g.transform.scale: {keyframes: [{frame: 0, value: 1}, {frame: 9, value: [1, 4, 1]}]}");
+    EXPECT_EQ(uneven.status, 2);
+    EXPECT_EQ(uneven.err, (dir / "movie.yaml").string() + ":5:31: error: 'surfaces.g.transform.scale' must scale by one "
+                          "number: group 'g' holds a sphere, which an uneven scale would make an ellipsoid\n");
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+    EXPECT_EQ(run("surfaces.g.transform.scale: {keyframes: [{frame: 0, value: 1}, {frame: 9, value: [4, 4, 4]}]}").status, 0);
+    EXPECT_EQ(run("surfaces.h.transform.scale: [1, 4, 1]").status, 0);
 }
 
 // Nested groups, placed as worked out by hand: a group moved by (10, 0, 0)

@@ -1,0 +1,57 @@
+// unusable_transform (scene/instance.h): which placements the tracer can
+// use, each refusal by its reason.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/instance.h"
+
+namespace fh {
+namespace {
+
+glm::dmat4 scaled(dvec3 s) { return glm::scale(glm::dmat4(1.0), s); }
+
+TEST(UnusableTransform, ScalesWithinTheLimitsAreUsableMirroredOrNot) {
+    EXPECT_EQ(unusable_transform(glm::dmat4(1.0)), "");
+    EXPECT_EQ(unusable_transform(scaled({1e12, 1e-12, -1})), "");
+    const glm::dmat4 turned = glm::rotate(glm::translate(glm::dmat4(1.0), {1e30, 0, 0}), 1.0, {1.0, 2.0, 3.0});
+    EXPECT_EQ(unusable_transform(turned * scaled({2, -3, 0.5})), "");
+}
+
+// Lengths of 1e-200 and 1e200: their squares would underflow and overflow.
+TEST(UnusableTransform, ScalesPastTheLimitsNameTheScale) {
+    const std::string limit = " along an axis; the limit is 1e-12 to 1e12";
+    EXPECT_EQ(unusable_transform(scaled({1, 1e-200, 1})), "the transform scales by 1e-200" + limit);
+    EXPECT_EQ(unusable_transform(scaled({1, 1, -1e200})), "the transform scales by 1e+200" + limit);
+    EXPECT_EQ(unusable_transform(scaled({1.01e12, 1, 1})), "the transform scales by 1.01e+12" + limit);
+    // Rotated, the scale is a column's length: 3e-13 * |(0.6, 0.8, 0)|.
+    glm::dmat4 m(1.0);
+    m[0] = glm::dvec4(1.8e-13, 2.4e-13, 0, 0);
+    m[1] = glm::dvec4(-0.8, 0.6, 0, 0);
+    EXPECT_EQ(unusable_transform(m), "the transform scales by 3e-13" + limit);
+}
+
+// Columns of usable lengths in one plane: the third is the sum of the others.
+TEST(UnusableTransform, AxesInOnePlaneAreSingular) {
+    glm::dmat4 m(1.0);
+    m[0] = glm::dvec4(1, 0, 0, 0);
+    m[1] = glm::dvec4(0, 2, 0, 0);
+    m[2] = glm::dvec4(1, 2, 0, 0);
+    EXPECT_EQ(unusable_transform(m), "the transform is singular (it flattens space: no inverse)");
+    m[2] = glm::dvec4(1, 2, 1e-9, 0);  // nearly, but an inverse exists
+    EXPECT_EQ(unusable_transform(m), "");
+    EXPECT_EQ(unusable_transform(scaled({1, 0, 1})), "the transform is singular (it flattens space: no inverse)");
+}
+
+TEST(UnusableTransform, NotFiniteIsSaid) {
+    glm::dmat4 m(1.0);
+    m[3][1] = std::nan("");
+    EXPECT_EQ(unusable_transform(m), "the transform is not finite");
+    m[3][1] = INFINITY;
+    EXPECT_EQ(unusable_transform(m), "the transform is not finite");
+}
+
+}  // namespace
+}  // namespace fh
