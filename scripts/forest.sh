@@ -59,7 +59,7 @@ done
 } > "$here/animations/forest.yaml"
 
 {
-  echo "# The forest showcase (make forest -> output/forest.mp4; written by"
+  echo "# The forest showcase (make forest -> output/forest_movie.mp4; written by"
   echo "# scripts/forest.sh): a wave runs through 10,000 bunnies -- each band of"
   echo "# 1,000 hops in turn, front to back -- while the camera glides in. Each"
   echo "# frame moves only instances: their matrices and the top-level BVH are"
