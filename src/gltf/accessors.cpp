@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "text/input_error.h"
 
@@ -83,6 +84,14 @@ const tinygltf::Accessor& AccessorReader::accessor(int index, const std::string&
 
 std::size_t AccessorReader::count(int index, const std::string& what) const { return accessor(index, what).count; }
 
+std::size_t AccessorReader::values(int index) const {
+    if (index < 0 || size_t(index) >= model_.accessors.size()) return 0;
+    const tinygltf::Accessor& a = model_.accessors[size_t(index)];
+    // At most half of size_t's range: a sum with a small total cannot wrap.
+    constexpr std::size_t most = std::numeric_limits<std::size_t>::max() / 32;
+    return std::min(a.count, most) * std::size_t(std::max(components_of(a.type), 0));
+}
+
 void AccessorReader::read_view(int view, std::size_t offset, std::size_t count, int components, int component_type,
                                bool normalized, std::vector<double>& out, const std::string& what) const {
     if (view < 0 || size_t(view) >= model_.bufferViews.size())
@@ -125,6 +134,10 @@ std::vector<double> AccessorReader::numbers(int index, int components, const std
     if (a.count > kMaxGltfAccessorValues / std::size_t(components))
         fail(named + ": " + std::to_string(a.count) + " elements of " + std::to_string(components) +
              " numbers are more than one accessor may hold (" + std::to_string(kMaxGltfAccessorValues) + " numbers)");
+    values_read_ += a.count * std::size_t(components);
+    if (values_read_ > kMaxGltfReadValues)
+        fail(named + ": the file's accessors, as its meshes, skins and animations read them, come to more than " +
+             std::to_string(kMaxGltfReadValues) + " numbers");
     std::vector<double> out;
     if (a.bufferView >= 0) {
         read_view(a.bufferView, a.byteOffset, a.count, components, a.componentType, a.normalized, out, named);

@@ -29,6 +29,8 @@ public:
 
     // How many elements accessor `index` has (checked to exist).
     std::size_t count(int index, const std::string& what) const;
+    // How many numbers it holds (count x components); 0 if it does not exist.
+    std::size_t values(int index) const;
 
     [[noreturn]] void fail(const std::string& what) const;
 
@@ -39,6 +41,7 @@ private:
                    bool normalized, std::vector<double>& out, const std::string& what) const;
 
     const tinygltf::Model& model_;
+    mutable std::size_t values_read_ = 0;  // against kMaxGltfReadValues
     std::string file_;
 };
 

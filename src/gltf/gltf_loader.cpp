@@ -73,6 +73,7 @@ public:
             s.materials.push_back(material_of(mat));
             add_surface_of(mat, s.material_names.back(), s);
         }
+        check_geometry_size();
         default_material_ = int(s.materials.size());
         s.material_names.push_back("glTF default");
         s.materials.push_back(material_of(tinygltf::Material{}));
@@ -84,6 +85,10 @@ public:
         for (size_t n = 0; n < world.size(); ++n)
             if (!is_finite(world[n]))
                 fail(s.nodes[n].name + ": its transform times its parents' is not finite (past a double's range)");
+        for (const Instance& i : s.instances)
+            if (!is_finite(world[size_t(i.node)] * i.in_node))
+                fail(s.nodes[size_t(i.node)].name +
+                     ": an EXT_mesh_gpu_instancing row times the node's transform is not finite (past a double's range)");
         for (size_t a = 0; a < m_.animations.size(); ++a) add_animation(int(a), out);
         if (skipped_points_lines_ > 0)
             warn(std::to_string(skipped_points_lines_) + " primitive(s) of points or lines skipped (triangles only)");
@@ -98,6 +103,34 @@ public:
 private:
     void warn(const std::string& what) { warnings_.push_back(file_ + ": warning: " + what); }
     [[noreturn]] void fail(const std::string& what) const { throw InputError(file_, what); }
+
+    // The numbers the shown meshes' primitives hold, each accessor counted
+    // once for every primitive that reads it, refused before any is read: a
+    // sparse accessor without a buffer view costs the file nothing, but
+    // each primitive that shares it is a copy (docs/gltf.md, "Limits").
+    void check_geometry_size() const {
+        std::vector<bool> shown(m_.meshes.size(), false);
+        for (const tinygltf::Node& n : m_.nodes)
+            if (n.mesh >= 0 && size_t(n.mesh) < shown.size()) shown[size_t(n.mesh)] = true;
+        std::size_t numbers = 0;
+        // One accessor past its own limit is left to the read, which names it.
+        auto add = [&](int accessor) {
+            if (const std::size_t n = read_.values(accessor); n <= kMaxGltfAccessorValues)
+                numbers = std::min(numbers + n, kMaxGltfReadValues + 1);
+        };
+        for (size_t m = 0; m < m_.meshes.size(); ++m) {
+            if (!shown[m]) continue;
+            for (const tinygltf::Primitive& p : m_.meshes[m].primitives) {
+                add(p.indices);
+                for (const auto& [name, index] : p.attributes) add(index);
+                for (const auto& target : p.targets)
+                    for (const auto& [name, index] : target) add(index);
+            }
+        }
+        if (numbers > kMaxGltfReadValues)
+            fail("its meshes' accessors hold more than " + std::to_string(kMaxGltfReadValues) +
+                 " numbers, counted for each primitive that reads them");
+    }
 
     // The scene's nodes in an order with every parent before its children,
     // each node reached once: a node with two parents, or a cycle, is refused.

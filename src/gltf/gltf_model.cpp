@@ -72,6 +72,14 @@ std::string missing_file(const std::string& name) {
     return "cannot find '" + shown(name) + "' beside the model (named by a uri)";
 }
 
+// Whether `path`, its links followed, is inside `dir`, its links followed.
+bool leads_inside(const fs::path& path, const fs::path& dir) {
+    std::error_code ec, dir_ec;
+    const fs::path real = fs::canonical(path, ec), root = fs::canonical(dir.empty() ? "." : dir, dir_ec);
+    if (ec || dir_ec) return false;
+    return std::mismatch(root.begin(), root.end(), real.begin(), real.end()).first == root.end();
+}
+
 // tinygltf's file callbacks, confined to the model's folder.
 bool file_exists(const std::string& name, void* user) {
     auto* folder = static_cast<Folder*>(user);
@@ -99,6 +107,13 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
     const auto size = fs::file_size(path, ec);
     if (ec || !fs::is_regular_file(path, ec) || name.rfind("data:", 0) == 0) {
         if (folder->problem.empty()) folder->problem = missing_file(name);
+        return false;
+    }
+    // A symbolic link inside the folder may lead anywhere: where it leads
+    // must be inside too.
+    if (!leads_inside(path, folder->dir)) {
+        if (folder->problem.empty())
+            folder->problem = "uri '" + shown(name) + "' leads out of the model's folder (through a symbolic link)";
         return false;
     }
     if (size > kMaxGltfBufferBytes) {
@@ -222,9 +237,16 @@ void position_of(const std::string& json, size_t at, int& line, int& column) {
 // tinygltf copies `extras` and `extensions` recursively, so depth is stack.
 constexpr int kMaxJsonNesting = 64;
 
-// The byte where the JSON's nesting first passes kMaxJsonNesting, or npos.
-size_t too_deep_at(const std::string& json) {
+// Where the JSON first asks for too much, before any of it is parsed: the
+// byte where its nesting passes kMaxJsonNesting, or where its values pass
+// kMaxGltfJsonValues (a value not first in its array or object follows a
+// comma, so values <= commas + arrays and objects + 1). npos: neither.
+struct JsonExcess {
+    size_t too_deep = std::string::npos, too_many = std::string::npos;
+};
+JsonExcess json_excess(const std::string& json) {
     int depth = 0;
+    size_t values = 1;
     bool in_string = false;
     for (size_t i = 0; i < json.size(); ++i) {
         const char c = json[i];
@@ -234,12 +256,15 @@ size_t too_deep_at(const std::string& json) {
         } else if (c == '"') {
             in_string = true;
         } else if (c == '[' || c == '{') {
-            if (++depth > kMaxJsonNesting) return i;
+            if (++depth > kMaxJsonNesting) return {i, std::string::npos};
+            if (++values > kMaxGltfJsonValues) return {std::string::npos, i};
+        } else if (c == ',') {
+            if (++values > kMaxGltfJsonValues) return {std::string::npos, i};
         } else if (c == ']' || c == '}') {
             --depth;
         }
     }
-    return std::string::npos;
+    return {};
 }
 
 // nlohmann's message without its "[json.exception...] " prefix.
@@ -258,10 +283,16 @@ std::string json_message(const nlohmann::json::exception& e) {
 // nesting, required extensions, uris, and the sizes it asks for.
 void check_json(const std::string& json, const std::string& file) {
     int line, column;
-    if (const size_t at = too_deep_at(json); at != std::string::npos) {
-        position_of(json, at, line, column);
+    const JsonExcess excess = json_excess(json);
+    if (excess.too_deep != std::string::npos) {
+        position_of(json, excess.too_deep, line, column);
         throw InputError(file, line, column,
                          "JSON: nested more than " + std::to_string(kMaxJsonNesting) + " arrays and objects deep");
+    }
+    if (excess.too_many != std::string::npos) {
+        position_of(json, excess.too_many, line, column);
+        throw InputError(file, line, column,
+                         "JSON: more than " + std::to_string(kMaxGltfJsonValues) + " values (numbers, strings, arrays, objects)");
     }
     nlohmann::json j;
     try {

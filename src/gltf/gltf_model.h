@@ -24,6 +24,15 @@ inline constexpr std::size_t kMaxGltfBufferBytes = std::size_t(1) << 30;  // all
 inline constexpr std::size_t kMaxGltfNodes = 1'000'000;
 // Numbers one accessor may hold (components x count: 2^26, 512 MiB read as doubles).
 inline constexpr std::size_t kMaxGltfAccessorValues = std::size_t(1) << 26;
+// Numbers read from all accessors together, an accessor counted each time a
+// primitive, channel or skin reads it (2^27: 1 GiB read as doubles), so
+// that many primitives sharing one huge sparse accessor -- zeros that cost
+// the file nothing -- cannot multiply it.
+inline constexpr std::size_t kMaxGltfReadValues = std::size_t(1) << 27;
+// JSON values (numbers, strings, arrays, objects...) in the file's JSON:
+// each costs about 100-200 bytes once parsed twice (nlohmann, then tinygltf's
+// copy of `extras` and `extensions`).
+inline constexpr std::size_t kMaxGltfJsonValues = std::size_t(1) << 22;
 // Vertices of all the morphed and skinned copies (each node deforms its own;
 // 2^22: about 250 MB of copies at most).
 inline constexpr std::size_t kMaxGltfDeformedVertices = std::size_t(1) << 22;

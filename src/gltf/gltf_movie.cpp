@@ -1,6 +1,7 @@
 #include "gltf/gltf_movie.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "gltf/gltf_loader.h"
 #include "text/closest_match.h"
@@ -74,8 +75,11 @@ Movie gltf_movie(GltfScene g, const GltfMovieRequest& request) {
     for (const NodeChannel& c : movie.node_channels) end = std::max(end, c.sampler.end());
     movie.fps = request.fps;
     const double frames = std::floor(end * request.fps + 1e-9) + 1;
-    if (frames > 1'000'000) throw UsageError(request.file + ": " + std::to_string(long(frames)) +
-                                             " frames at this --fps (the limit is 1,000,000)");
+    if (frames > 1'000'000) {
+        char count[32];  // up to 1e308: printed as a double, never through a long
+        std::snprintf(count, sizeof count, "%.4g", frames);
+        throw UsageError(request.file + ": " + count + " frames at this --fps (the limit is 1,000,000)");
+    }
     movie.seconds = frames / request.fps;
     return movie;
 }

@@ -150,6 +150,32 @@ TEST(GltfHostile, SparseCountWithoutABufferViewIsBoundedBeforeAllocating) {
         "one accessor may hold (67108864 numbers)");
 }
 
+// One sparse accessor of 2^24 zero positions (50,331,648 numbers, within
+// one accessor's limit) costs the file nothing, but each primitive that reads
+// it is a copy: three are more than 2^27 numbers, refused before any is read.
+TEST(GltfHostile, PrimitivesSharingAHugeSparseAccessorAreBoundedBeforeAllocating) {
+    Bin bin;
+    const int where = bin.u8({0}), values = bin.f32({1, 0, 0});
+    const std::string position = R"({"attributes": {"POSITION": 0}})";
+    refused_in_bounded_memory(
+        one_mesh(bin, position + ", " + position + ", " + position,
+                 R"({"componentType": 5126, "count": 16777216, "type": "VEC3")" + sparse(1, where, kUnsignedByte, values) + "}"),
+        "bad.gltf: error: its meshes' accessors hold more than 134217728 numbers, counted for each primitive that "
+        "reads them");
+}
+
+// Parsed twice (checked, then read), a JSON value costs 100-300 bytes: more
+// than 2^22 of them are refused before parsing, with the place of the first
+// one too many (past the extras' first few).
+TEST(GltfHostile, JsonOfTooManyValuesIsRefusedBeforeParsing) {
+    std::string zeros = "[0";
+    for (size_t i = 1; i < (size_t(1) << 22); ++i) zeros += ",0";
+    zeros += "]";
+    const InputError e = refused(gltf_json(R"("scenes": [{"nodes": [0]}], "nodes": [{}], "extras": )" + zeros),
+                                 "JSON: more than 4194304 values (numbers, strings, arrays, objects)");
+    EXPECT_GT(e.column(), 8'000'000);
+}
+
 // ------------------------------------------------------------------ nodes
 
 const std::string kScene0 = R"("scenes": [{"nodes": [0]}], )";
@@ -210,6 +236,18 @@ TEST(GltfHostile, WorldTransformOverflowingIsRefused) {
             add_gltf(s, load_gltf_from_memory(nested, "bad.gltf", "/nonexistent-folder"), "m", Transform{});
         },
         "bad.gltf", "node 1: its transform times its parents' is not finite (past a double's range)");
+}
+
+// EXT_mesh_gpu_instancing's row of scale 3e38 under a node scaled 1e300:
+// each finite, their product not.
+TEST(GltfHostile, InstancingRowOverflowingIsRefused) {
+    Bin bin;
+    const int sc = bin.f32({3e38f, 3e38f, 3e38f});
+    const std::string more = ", " + accessor(sc, kFloat, 1, "VEC3");
+    refused(gltf_json(triangle_mesh(bin, more) + R"(, "extensionsUsed": ["EXT_mesh_gpu_instancing"],
+        "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "scale": [1e300,1e300,1e300], "extensions":
+        {"EXT_mesh_gpu_instancing": {"attributes": {"SCALE": 1}}}}])", bin),
+            "node 0: an EXT_mesh_gpu_instancing row times the node's transform is not finite");
 }
 
 // -------------------------------------------------------------------- GLB
@@ -292,6 +330,24 @@ TEST(GltfHostile, PercentEncodedClimbReadsNothingOutside) {
     dir.write("secret.bin", bin.bytes());
     const std::string path = dir.write("model/m.gltf", gltf_json(body, bin, in_file("%2E%2E/secret.bin")));
     expect_input_error([&] { load_gltf(path); }, path, "climbs out of the model's folder");
+}
+
+// A symbolic link inside the model's folder to a file outside it: the uri
+// is harmless as text, but the model must still not read that file.
+TEST(GltfHostile, ALinkOutOfTheFolderReadsNothingOutside) {
+    TempFolder dir("link");
+    Bin bin;
+    const std::string body = triangle_body(bin);
+    dir.write("secret.bin", bin.bytes());
+    const std::string path = dir.write("model/m.gltf", gltf_json(body, bin, in_file("data.bin")));
+    std::filesystem::create_symlink(dir.path / "secret.bin", dir.path / "model" / "data.bin");
+    expect_input_error([&] { load_gltf(path); }, path,
+                       "uri 'data.bin' leads out of the model's folder (through a symbolic link)");
+    // A link that stays inside is read.
+    dir.write("model/real.bin", bin.bytes());
+    std::filesystem::remove(dir.path / "model" / "data.bin");
+    std::filesystem::create_symlink("real.bin", dir.path / "model" / "data.bin");
+    EXPECT_EQ(load_gltf(path).scene.meshes.size(), 1u);
 }
 
 TEST(GltfHostile, BufferFileMissing) {
