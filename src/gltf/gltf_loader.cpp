@@ -86,7 +86,7 @@ public:
             if (!is_finite(world[n]))
                 fail(s.nodes[n].name + ": its transform times its parents' is not finite (past a double's range)");
         for (const Instance& i : s.instances)
-            if (!is_finite(world[size_t(i.node)] * i.in_node))
+            if (i.row >= 0 && !is_finite(world[size_t(i.node)] * s.instance_rows[size_t(i.row)]))
                 fail(s.nodes[size_t(i.node)].name +
                      ": an EXT_mesh_gpu_instancing row times the node's transform is not finite (past a double's range)");
         for (size_t a = 0; a < m_.animations.size(); ++a) add_animation(int(a), out);
@@ -278,10 +278,10 @@ private:
     }
 
     // Where EXT_mesh_gpu_instancing puts copies within the node: one matrix
-    // a row (T * R * S), or the node itself.
+    // a row (T * R * S); none without it (the node itself).
     std::vector<glm::dmat4> rows_of(const tinygltf::Node& node, const std::string& name) const {
         const auto it = node.extensions.find("EXT_mesh_gpu_instancing");
-        if (it == node.extensions.end()) return {glm::dmat4(1.0)};
+        if (it == node.extensions.end()) return {};
         if (!it->second.Has("attributes") || !it->second.Get("attributes").IsObject())
             fail(name + ": EXT_mesh_gpu_instancing without attributes");
         const tinygltf::Value& attributes = it->second.Get("attributes");
@@ -314,6 +314,8 @@ private:
     void add_mesh_instances(const tinygltf::Node& node, int at, Scene& s) {
         if (size_t(node.mesh) >= m_.meshes.size()) fail(s.nodes[size_t(at)].name + ": mesh " + std::to_string(node.mesh) + " does not exist");
         const std::vector<glm::dmat4> rows = rows_of(node, s.nodes[size_t(at)].name);
+        const int first_row = rows.empty() ? -1 : int(s.instance_rows.size());
+        s.instance_rows.insert(s.instance_rows.end(), rows.begin(), rows.end());
         const tinygltf::Mesh& mesh = m_.meshes[size_t(node.mesh)];
         // A morphed or skinned mesh is this node's own copy: its pose is the node's.
         const size_t targets = morph_target_count(node.mesh);
@@ -334,9 +336,10 @@ private:
             if (deformed) sm = add_deformation(node, at, node.mesh, int(p), sm, s);
             const int material = mesh.primitives[p].material;
             if (material >= int(m_.materials.size())) fail("mesh " + std::to_string(node.mesh) + ": material " + std::to_string(material) + " does not exist");
-            for (const glm::dmat4& row : rows) {
+            for (size_t k = 0; k < std::max<size_t>(rows.size(), 1); ++k) {
                 if (s.instances.size() >= kMaxInstances) fail("more than " + std::to_string(kMaxInstances) + " instances");
-                s.instances.push_back({sm, material >= 0 ? material : default_material_, glm::dmat4(1.0), at, row});
+                s.instances.push_back({sm, material >= 0 ? material : default_material_, glm::dmat4(1.0), at,
+                                       first_row < 0 ? -1 : first_row + int(k)});
             }
         }
     }
@@ -727,8 +730,10 @@ std::vector<NodeAnimation> add_gltf(Scene& scene, GltfFile file, const std::stri
         i.mesh += meshes;
         i.material += materials;
         i.node += nodes;
+        if (i.row >= 0) i.row += int(scene.instance_rows.size());
         scene.instances.push_back(i);
     }
+    scene.instance_rows.insert(scene.instance_rows.end(), g.instance_rows.begin(), g.instance_rows.end());
     // What hangs on a node, its node renumbered.
     auto add_on_nodes = [&](const auto& from, auto& to) {
         for (auto x : from) {

@@ -15,9 +15,10 @@
 
 namespace fh {
 
-// A scene may hold this many instances: each costs the tracer ~250 bytes
-// (its matrices in double and in the tracer's type, its box, its share of
-// the top-level BVH), so 4 million take ~1 GB.
+// A scene may hold this many instances: each costs ~1.1 KB at the peak of
+// loading and preparing, in double (its placement as read and as placed,
+// its maps in the tracer's type, its box, its share of the top-level BVH
+// and of the builder's work; 400,000 took 444 MB), so 4 million take ~4.5 GB.
 inline constexpr std::size_t kMaxInstances = 4'000'000;
 
 // A `meshes:` entry: one file, read once, in its own space.
@@ -32,9 +33,11 @@ struct Instance {
     int material = 0;  // into Scene::materials
     glm::dmat4 to_world{1.0};  // object space -> world; invertible (the loaders check)
     // A glTF mesh: the scene node that places it (scene/node.h), and where
-    // in that node's space (EXT_mesh_gpu_instancing's rows; else identity).
+    // in that node's space: EXT_mesh_gpu_instancing's row in
+    // Scene::instance_rows, or -1 at the node itself (kept apart: most
+    // instances have none).
     int node = -1;
-    glm::dmat4 in_node{1.0};
+    int row = -1;
 };
 
 // A `type: group`: what it holds moves with its transform.

@@ -35,7 +35,7 @@ void place_nodes(Scene& scene) {
     nothing[3][3] = 1;
     for (Instance& i : scene.instances) {
         if (i.node < 0) continue;
-        const glm::dmat4 m = world[size_t(i.node)] * i.in_node;
+        const glm::dmat4 m = i.row < 0 ? world[size_t(i.node)] : world[size_t(i.node)] * scene.instance_rows[size_t(i.row)];
         i.to_world = is_finite(m) ? m : nothing;
     }
     auto origin = [&](int n) { return dvec3(world[size_t(n)][3]); };

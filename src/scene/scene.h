@@ -65,6 +65,7 @@ struct Scene {
     std::vector<NamedSurface> named_surfaces;
     std::vector<SceneMesh> meshes;   // the `meshes:` section, each file read once
     std::vector<Instance> instances;  // of those meshes
+    std::vector<glm::dmat4> instance_rows;  // glTF instances' places in their nodes (Instance::row)
     std::vector<Group> groups;
     std::vector<SceneNode> nodes;  // glTF files' nodes, parents first (scene/node.h)
     std::vector<Deformation> deformations;  // meshes morphed or skinned (scene/deformation.h)

@@ -60,7 +60,7 @@ public:
             }
             if (rows.rows.size() == kMaxInstances)
                 throw InputError(file_, line_, 1, "more than " + std::to_string(kMaxInstances) +
-                                                      " placements (the limit: what the tracer holds in ~1 GB)");
+                                                      " placements (the limit: about 4.5 GB to load and prepare)");
             rows.rows.push_back(read_row(line));
             rows.lines.push_back(line_);
         }

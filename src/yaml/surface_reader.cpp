@@ -216,6 +216,11 @@ private:
         const glm::dmat4 world = place.world * named.transform.matrix();
         named.index = scene_.instances.size();
         named.count = rows.size();
+        // Room for the rows, not twice what they need (growth doubles), yet
+        // still amortized over many sets.
+        std::vector<Instance>& all = scene_.instances;
+        if (all.size() + rows.size() > all.capacity())
+            all.reserve(std::max(all.size() + rows.size(), all.capacity() + all.capacity() / 2));
         for (size_t k = 0; k < rows.size(); ++k) {
             rows_matrices->push_back(rows[k].matrix());
             const glm::dmat4 to_world = world * rows_matrices->back();
