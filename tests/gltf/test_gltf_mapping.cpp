@@ -10,6 +10,7 @@
 
 #include "gltf/gltf_load.h"
 #include "gltf/gltf_movie.h"
+#include "scene/camera.h"
 
 namespace fh {
 namespace {
@@ -85,6 +86,39 @@ TEST(GltfCameras, ACameraLooksDownItsNodesMinusZWithItsPlusYUp) {
     expect_vec(s.cameras[0].view_point, {1, -3, 2});
     expect_vec(s.cameras[0].look_at, {-1, 0, 0});
     expect_vec(s.cameras[0].up, {0, 0, 1});
+}
+
+// The rays the report's camera casts for glTF cameras on the node of the
+// test above (placed z-up: eye (1,-3,2) looking along -x, up +z, so the
+// image's right is +y). Perspective, yfov 90° and aspectRatio 2 (800 x 400):
+// the top edge's middle is 45° above the view axis, the right edge's middle
+// at tan = 2 x tan 45° beside it. Orthographic, xmag 4 and ymag 3: rays
+// along -x from the eye moved 3 up and 4 right.
+TEST(GltfCameras, RaysThroughTheImageEdgesAreTheFieldOfViewsEdges) {
+    auto camera = [](const std::string& camera) {
+        const Scene s = z_up(gltf_json(R"("scenes": [{"nodes": [0]}], "nodes": [{"translation": [1,2,0], "children": [1]},
+            {"camera": 0, "translation": [0,0,3], "rotation": [0,0.7071067811865476,0,0.7071067811865476]}],
+            "cameras": [)" + camera + "]"));
+        return s.cameras.at(0);
+    };
+    const Camera p = camera(R"({"type": "perspective", "perspective": {"yfov": 1.5707963267948966, "aspectRatio": 2, "znear": 0.1}})");
+    ASSERT_EQ(p.width, 800);
+    ASSERT_EQ(p.height, 400);
+    const CameraRays<double> rays(p);
+    auto direction = [&](double px, double py) { return rays.generate(px, py).direction; };
+    expect_vec(rays.generate(0, 0).origin, {1, -3, 2}, 1e-12);
+    expect_vec(direction(400, 200), {-1, 0, 0}, 1e-12);
+    expect_vec(direction(400, 0), glm::normalize(dvec3(-1, 0, 1)), 1e-12);
+    expect_vec(direction(800, 200), glm::normalize(dvec3(-1, 2, 0)), 1e-12);
+    expect_vec(direction(0, 400), glm::normalize(dvec3(-1, -2, -1)), 1e-12);
+
+    const Camera o = camera(R"({"type": "orthographic", "orthographic": {"xmag": 4, "ymag": 3, "znear": 0.1, "zfar": 100}})");
+    ASSERT_EQ(o.height, 600);
+    const CameraRays<double> flat(o);
+    expect_vec(flat.generate(400, 0).origin, {1, -3, 5}, 1e-12);
+    expect_vec(flat.generate(800, 300).origin, {1, 1, 2}, 1e-12);
+    expect_vec(flat.generate(0, 600).origin, {1, -7, -1}, 1e-12);
+    expect_vec(flat.generate(0, 600).direction, {-1, 0, 0}, 1e-12);
 }
 
 TEST(GltfCameras, AFileWithoutACameraGetsTheDefaultFramingItsBox) {
