@@ -769,7 +769,8 @@ void add_default_camera(Scene& scene) {
     c.name = "default";
     c.width = 800;
     c.height = 600;
-    // 45 degrees tall; far enough that the bounding sphere fills 90% of the height.
+    // 45 degrees tall; far enough that the bounding sphere's sine is 0.9 of
+    // the half angle's: tan(asin(0.9 sin 22.5°)) / tan 22.5° = 88.6% of the height.
     const double yfov = std::numbers::pi / 4;
     c.projection_distance = 10 / std::tan(yfov / 2);
     const dvec3 from = glm::normalize(dvec3(0.35, -1, 0.45));
