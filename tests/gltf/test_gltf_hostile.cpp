@@ -299,6 +299,10 @@ TEST(GltfHostile, LightValuesOutOfRange) {
             "light 0: outerConeAngle must be in (0, pi/2]");
     refused(with_light(R"({"type": "spot", "name": "wide", "spot": {"outerConeAngle": 1.6}})"),
             "wide: outerConeAngle must be in (0, pi/2]");
+    refused(with_light(R"({"type": "spot", "spot": {"innerConeAngle": 0.5, "outerConeAngle": 0.5}})"),
+            "light 0: innerConeAngle must be in [0, outerConeAngle)");
+    refused(with_light(R"({"type": "spot", "spot": {"innerConeAngle": -0.1, "outerConeAngle": 0.5}})"),
+            "light 0: innerConeAngle must be in [0, outerConeAngle)");
     // pi/2 as a float (1.5707963705...) is the widest cone the extension allows.
     const GltfFile f = load_gltf_from_memory(with_light(R"({"type": "spot", "spot": {"outerConeAngle": 1.5707963705062866}})"),
                                              "ok.gltf", "/nonexistent-folder");
