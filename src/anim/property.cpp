@@ -2,6 +2,10 @@
 
 #include <cmath>
 
+#include <glm/vector_relational.hpp>
+
+#include "scene/instance.h"
+
 namespace fh {
 
 namespace {
@@ -155,7 +159,14 @@ std::string check_value(const Target& t, const dvec3& v) {
     case ValueKind::unit_interval: return v.x >= 0 && v.x <= 1 ? "" : "it must be in 0..1";
     case ValueKind::direction: return max_abs_component(v) > 0 ? "" : "a direction must not be zero";
     case ValueKind::color: return v.x >= 0 && v.y >= 0 && v.z >= 0 ? "" : "a colour must be >= 0";
-    case ValueKind::scale: return v.x != 0 && v.y != 0 && v.z != 0 ? "" : "a scale must not be 0";
+    case ValueKind::scale: {
+        if (v.x == 0 || v.y == 0 || v.z == 0) return "a scale must not be 0";
+        // What a scene's transform may scale by (scene/instance.h).
+        const dvec3 a = glm::abs(v);
+        const bool inside = glm::all(glm::greaterThanEqual(a, dvec3(kMinTransformScale))) &&
+                            glm::all(glm::lessThanEqual(a, dvec3(kMaxTransformScale)));
+        return inside ? "" : "a scale must be 1e-12 to 1e12 in size";
+    }
     default: return "";
     }
 }

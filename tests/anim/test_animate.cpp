@@ -218,6 +218,9 @@ TEST(Animate, MistakesNameThePathAndTheFrame) {
               "FILE:5:3: error: lights.spot.intensity is -0.625 at frame 1; it must be >= 0");
     EXPECT_EQ(movie_error("direction.yaml", "  lights.sun.direction: {keyframes: [{frame: 0, value: [1, 0, 0]}, {frame: 2, value: [-1, 0, 0]}]}\n"),
               "FILE:5:3: error: lights.sun.direction is [0, 0, 0] at frame 1; a direction must not be zero");
+    // Past what a transform may scale by, first at frame 1: 1 + (1e13 - 1) / 4 = 2.5e12.
+    EXPECT_EQ(movie_error("scale.yaml", "  surfaces.tri.transform.scale: {keyframes: [{frame: 0, value: 1}, {frame: 4, value: [1, 1e13, 1]}]}\n"),
+              "FILE:5:3: error: surfaces.tri.transform.scale is [1, 2.5e+12, 1] at frame 1; a scale must be 1e-12 to 1e12 in size");
     EXPECT_EQ(movie_error("unknown.yaml", "  lights.spot.radius: 2\n"),
               "FILE:5:3: error: unknown property 'radius' in 'lights.spot.radius': spot light 'spot' can animate on, "
               "intensity, color, direction, position, max_angle");
