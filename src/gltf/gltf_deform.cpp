@@ -14,6 +14,14 @@ std::vector<dvec3> vectors(const std::vector<double>& v) {
 
 }  // namespace
 
+size_t morph_target_count(const tinygltf::Model& model, int m, const AccessorReader& read) {
+    const tinygltf::Mesh& mesh = model.meshes[size_t(m)];
+    const size_t n = mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
+    for (const tinygltf::Primitive& p : mesh.primitives)
+        if (p.targets.size() != n) read.fail("mesh " + std::to_string(m) + ": its primitives have different numbers of morph targets");
+    return n;
+}
+
 std::vector<MorphTarget> read_morph_targets(const tinygltf::Primitive& prim, const AccessorReader& read,
                                             size_t vertices, const std::string& what) {
     std::vector<MorphTarget> targets;

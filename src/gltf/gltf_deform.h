@@ -14,6 +14,10 @@
 
 namespace fh {
 
+// How many morph targets mesh m has: the same for each of its primitives,
+// as the specification requires.
+size_t morph_target_count(const tinygltf::Model& model, int m, const AccessorReader& read);
+
 std::vector<MorphTarget> read_morph_targets(const tinygltf::Primitive& prim, const AccessorReader& read,
                                             size_t vertices, const std::string& what);
 

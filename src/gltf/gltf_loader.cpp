@@ -6,12 +6,12 @@
 #include <functional>
 #include <map>
 #include <memory>
-#include <tuple>
 #include <numbers>
-
-#include <glm/gtc/matrix_transform.hpp>
+#include <tuple>
 
 #include "gltf/accessors.h"
+#include "gltf/gltf_animations.h"
+#include "gltf/gltf_cameras_lights.h"
 #include "gltf/gltf_deform.h"
 #include "meshes/mesh_loader.h"
 #include "text/input_error.h"
@@ -318,7 +318,7 @@ private:
         s.instance_rows.insert(s.instance_rows.end(), rows.begin(), rows.end());
         const tinygltf::Mesh& mesh = m_.meshes[size_t(node.mesh)];
         // A morphed or skinned mesh is this node's own copy: its pose is the node's.
-        const size_t targets = morph_target_count(node.mesh);
+        const size_t targets = morph_target_count(m_, node.mesh, read_);
         const bool deformed = node.skin >= 0 || targets > 0;
         if (targets > 0) {
             std::vector<double> w = !node.weights.empty() ? node.weights : mesh.weights;
@@ -342,16 +342,6 @@ private:
                                        first_row < 0 ? -1 : first_row + int(k)});
             }
         }
-    }
-
-    // How many morph targets mesh m has: the same for each of its
-    // primitives, as the specification requires.
-    size_t morph_target_count(int m) const {
-        const tinygltf::Mesh& mesh = m_.meshes[size_t(m)];
-        const size_t n = mesh.primitives.empty() ? 0 : mesh.primitives[0].targets.size();
-        for (const tinygltf::Primitive& p : mesh.primitives)
-            if (p.targets.size() != n) fail("mesh " + std::to_string(m) + ": its primitives have different numbers of morph targets");
-        return n;
     }
 
     // Node `at`'s own copy of a morphed or skinned primitive (its scene mesh
@@ -548,119 +538,18 @@ private:
         return mesh;
     }
 
-    // glTF cameras onto the report's (docs/gltf.md): the image plane 2 h
-    // tall at distance d, so tan(yfov / 2) = h / d; an orthographic camera
-    // sees ymag above and below its axis.
     void add_camera(int index, int node, Scene& s) const {
-        if (size_t(index) >= m_.cameras.size()) fail("camera " + std::to_string(index) + " does not exist");
-        const tinygltf::Camera& c = m_.cameras[size_t(index)];
-        Camera cam;
-        cam.name = c.name.empty() ? "camera " + std::to_string(index) : c.name;
-        cam.node = node;
-        cam.width = 800;
-        if (c.type == "orthographic") {
-            const double xmag = c.orthographic.xmag, ymag = c.orthographic.ymag;
-            if (!(xmag > 0) || !(ymag > 0) || !std::isfinite(xmag) || !std::isfinite(ymag))
-                fail(cam.name + ": xmag and ymag must be > 0");
-            cam.projection = Projection::orthographic;
-            cam.half_height = ymag;
-            cam.height = std::clamp(int(std::lround(800 * ymag / xmag)), 1, 16384);
-        } else if (c.type == "perspective") {
-            const double yfov = c.perspective.yfov, aspect = c.perspective.aspectRatio;
-            if (!(yfov > 0 && yfov < std::numbers::pi)) fail(cam.name + ": yfov must be in (0, pi)");
-            cam.projection = Projection::perspective;
-            cam.projection_distance = 10 / std::tan(yfov / 2);
-            cam.height = aspect > 0 && std::isfinite(aspect) ? std::clamp(int(std::lround(800 / aspect)), 1, 16384) : 600;
-        } else {
-            fail(cam.name + ": camera type '" + c.type + "' is not perspective or orthographic");
-        }
-        s.cameras.push_back(cam);
+        if (index < 0 || size_t(index) >= m_.cameras.size()) fail("camera " + std::to_string(index) + " does not exist");
+        s.cameras.push_back(gltf_camera(m_.cameras[size_t(index)], index, node, file_));
     }
 
-    // KHR_lights_punctual onto the report's lights (docs/gltf.md): colour
-    // 255 c; intensity exposure x lux (directional) or candela (point, spot)
-    // / 255, so 1 lux on a white surface facing it is 255. A spot's cone
-    // ends at outerConeAngle; a point light is a spot with no cone.
     void add_light(int index, int node, Scene& s) const {
         if (index < 0 || size_t(index) >= m_.lights.size()) fail("light " + std::to_string(index) + " does not exist");
-        const tinygltf::Light& l = m_.lights[size_t(index)];
-        const std::string name = l.name.empty() ? "light " + std::to_string(index) : l.name;
-        const dvec3 color = 255.0 * glm::clamp(vec3_or(l.color, dvec3(1)), 0.0, 1.0);
-        if (!(l.intensity >= 0) || !std::isfinite(l.intensity)) fail(name + ": intensity must be >= 0");
-        const double intensity = exposure_ * l.intensity / 255;
-        if (l.type == "directional") {
-            DirectionalLight<double> d;
-            d.name = name;
-            d.color = color;
-            d.intensity = intensity;
-            d.node = node;
-            s.directional_lights.push_back(d);
-        } else if (l.type == "point" || l.type == "spot") {
-            SpotLight<double> spot;
-            spot.name = name;
-            spot.color = color;
-            spot.intensity = intensity;
-            spot.node = node;
-            spot.max_angle = l.type == "point" ? kInfinity<double> : l.spot.outerConeAngle;
-            // (0, pi/2] by the extension; pi/2 written as a float rounds a little past it.
-            if (!(spot.max_angle > 0) || (l.type == "spot" && spot.max_angle > double(float(std::numbers::pi / 2))))
-                fail(name + ": outerConeAngle must be in (0, pi/2]");
-            // Not drawn (the report's spot falls off linearly), but checked.
-            if (l.type == "spot" && !(l.spot.innerConeAngle >= 0 && l.spot.innerConeAngle < l.spot.outerConeAngle))
-                fail(name + ": innerConeAngle must be in [0, outerConeAngle)");
-            s.spot_lights.push_back(spot);
-        } else {
-            fail(name + ": light type '" + l.type + "' is not directional, point or spot");
-        }
+        add_gltf_light(m_.lights[size_t(index)], index, node, exposure_, s, file_);
     }
 
     void add_animation(int index, GltfFile& out) {
-        const tinygltf::Animation& a = m_.animations[size_t(index)];
-        NodeAnimation anim;
-        anim.name = a.name.empty() ? "animation " + std::to_string(index) : a.name;
-        for (size_t k = 0; k < a.channels.size(); ++k) {
-            const tinygltf::AnimationChannel& c = a.channels[k];
-            const std::string what = anim.name + " channel " + std::to_string(k);
-            NodeChannel channel;
-            if (c.target_path == "translation") channel.property = NodeProperty::translation;
-            else if (c.target_path == "rotation") channel.property = NodeProperty::rotation;
-            else if (c.target_path == "scale") channel.property = NodeProperty::scale;
-            else if (c.target_path == "weights") channel.property = NodeProperty::weights;
-            else fail(what + ": target path '" + c.target_path + "' is not translation, rotation, scale or weights");
-            if (c.target_node < 0 || size_t(c.target_node) >= m_.nodes.size())
-                fail(what + ": node " + std::to_string(c.target_node) + " does not exist");
-            channel.node = new_index_[size_t(c.target_node)];
-            if (channel.node < 0) continue;  // a node outside the scene shown
-            if (out.scene.nodes[size_t(channel.node)].has_matrix)
-                fail(what + ": node " + std::to_string(c.target_node) + " has a 'matrix', which cannot be animated");
-            if (c.sampler < 0 || size_t(c.sampler) >= a.samplers.size())
-                fail(what + ": sampler " + std::to_string(c.sampler) + " does not exist");
-            const tinygltf::AnimationSampler& sm = a.samplers[size_t(c.sampler)];
-            Sampler& s = channel.sampler;
-            s.rotation = channel.property == NodeProperty::rotation;
-            s.components = s.rotation ? 4 : 3;
-            if (channel.property == NodeProperty::weights) {
-                const tinygltf::Node& target = m_.nodes[size_t(c.target_node)];
-                const size_t targets = target.mesh >= 0 && size_t(target.mesh) < m_.meshes.size() ? morph_target_count(target.mesh) : 0;
-                if (targets == 0) fail(what + ": weights of node " + std::to_string(c.target_node) + ", which has no morph targets");
-                s.components = int(targets);
-            }
-            if (sm.interpolation == "STEP") s.interpolation = Interpolation3::step;
-            else if (sm.interpolation == "CUBICSPLINE") s.interpolation = Interpolation3::cubic_spline;
-            else if (sm.interpolation.empty() || sm.interpolation == "LINEAR") s.interpolation = Interpolation3::linear;
-            else fail(what + ": interpolation '" + sm.interpolation + "' is not LINEAR, STEP or CUBICSPLINE");
-            s.times = read_.numbers(sm.input, 1, what + " input");
-            // Weights come as scalars, one per target a key.
-            s.values = read_.numbers(sm.output, channel.property == NodeProperty::weights ? 1 : s.components,
-                                     what + " output");
-            const size_t groups = s.interpolation == Interpolation3::cubic_spline ? 3 : 1;
-            if (s.values.size() != groups * s.times.size() * size_t(s.components))
-                fail(what + ": " + std::to_string(s.values.size() / size_t(s.components)) + " output values for " +
-                     std::to_string(s.times.size()) + " keys");
-            if (const std::string why = sampler_problem(s); !why.empty()) fail(what + ": " + why);
-            anim.channels.push_back(std::move(channel));
-        }
-        out.animations.push_back(std::move(anim));
+        out.animations.push_back(read_gltf_animation(m_, index, read_, new_index_, out.scene.nodes));
     }
 
     const tinygltf::Model& m_;
@@ -758,43 +647,6 @@ std::vector<NodeAnimation> add_gltf(Scene& scene, GltfFile file, const std::stri
     place_nodes(scene);
     deform_meshes(scene);  // the pose the file stands in
     return std::move(file.animations);
-}
-
-void add_default_camera(Scene& scene) {
-    Aabb box;
-    for (const Instance& i : scene.instances)
-        for (const dvec3& p : scene.meshes[size_t(i.mesh)].mesh->positions) box.grow(dvec3(i.to_world * glm::dvec4(p, 1.0)));
-    for (const auto& t : scene.triangles) box.grow(t.v0), box.grow(t.v1), box.grow(t.v2);
-    for (const auto& s : scene.spheres()) box.grow(s.center - s.radius), box.grow(s.center + s.radius);
-    const dvec3 center = box.empty() ? dvec3(0) : box.center();
-    const double radius = box.empty() ? 1 : std::max(0.5 * glm::length(box.hi - box.lo), 1e-9);
-    Camera c;
-    c.name = "default";
-    c.width = 800;
-    c.height = 600;
-    // 45 degrees tall; far enough that the bounding sphere's sine is 0.9 of
-    // the half angle's: tan(asin(0.9 sin 22.5°)) / tan 22.5° = 88.6% of the height.
-    const double yfov = std::numbers::pi / 4;
-    c.projection_distance = 10 / std::tan(yfov / 2);
-    const dvec3 from = glm::normalize(dvec3(0.35, -1, 0.45));
-    c.view_point = center + from * (radius / std::sin(yfov / 2) / 0.9);
-    c.look_at = -from;
-    c.up = {0, 0, 1};
-    scene.cameras.push_back(c);
-}
-
-void add_default_lights(Scene& scene, const Camera& camera, double exposure, bool key_light) {
-    scene.ambient_lights.push_back({"ambient", dvec3(255), 0.15 * exposure / 255});
-    if (!key_light) return;
-    // 1 lux travelling as the camera looks, and down and to the right: from
-    // behind its upper left.
-    const CameraBasis b = camera_basis(camera.look_at, camera.up);
-    DirectionalLight<double> key;
-    key.name = "key";
-    key.color = dvec3(255);
-    key.intensity = exposure / 255;
-    key.direction = glm::normalize(-b.w - 0.8 * b.v + 0.5 * b.u);
-    scene.directional_lights.push_back(key);
 }
 
 }  // namespace fh

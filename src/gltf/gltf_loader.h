@@ -42,11 +42,4 @@ bool is_gltf_file(const std::string& path);
 std::vector<NodeAnimation> add_gltf(Scene& scene, GltfFile file, const std::string& name, const Transform& transform,
                                     int parent = -1);
 
-// What a glTF file shown on its own gets when it has none (docs/gltf.md):
-// a perspective camera framing the scene's bounds from the front, above;
-// a key light from behind the camera's upper left; always an ambient light
-// of 0.15. exposure: as load_gltf's.
-void add_default_camera(Scene& scene);
-void add_default_lights(Scene& scene, const Camera& camera, double exposure, bool key_light);
-
 }  // namespace fh

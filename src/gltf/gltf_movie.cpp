@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "gltf/gltf_cameras_lights.h"
 #include "gltf/gltf_loader.h"
 #include "text/closest_match.h"
 #include "text/input_error.h"
