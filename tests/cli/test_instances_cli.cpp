@@ -58,36 +58,33 @@ std::string error_of(const std::string& name, const std::string& body, const std
 const std::string kMeshes = "meshes:\n  ball: {file: ball.off}\n";
 
 TEST(InstancesCli, EachMistakeIsOneLineAndNothingWritten) {
+    // A set of instances placed by rows.csv (`more`: the set's other keys).
+    auto rows_error = [](const std::string& name, const std::string& csv, const std::string& more = "") {
+        return error_of(name, kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, placements: rows.csv" +
+                                  more + "}\n", csv);
+    };
+    // One instance of the ball with `more` keys.
+    auto instance_error = [](const std::string& name, const std::string& more) {
+        return error_of(name, kMeshes + "surfaces:\n  - {type: instance, mesh: ball, material: grey, " + more + "}\n");
+    };
     EXPECT_EQ(error_of("bad_mesh_name", kMeshes + "surfaces:\n  - {type: instance, mesh: bal, material: grey}\n"),
               "DIR/scene.yaml:14:28: error: undefined mesh 'bal' (did you mean 'ball'?)");
     EXPECT_EQ(error_of("no_meshes", "surfaces:\n  - {type: instance, mesh: ball, material: grey}\n"),
               "DIR/scene.yaml:12:28: error: undefined mesh 'ball' (meshes are named in the scene's 'meshes:' section)");
-    EXPECT_EQ(error_of("short_row", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
-                                              "placements: rows.csv}\n",
-                       "tx,ty,tz,scale\n0,0,0,1\n1,2\n"),
+    EXPECT_EQ(rows_error("short_row", "tx,ty,tz,scale\n0,0,0,1\n1,2\n"),
               "DIR/rows.csv:3:4: error: expected 4 values as the header names, got 2");
-    EXPECT_EQ(error_of("word_row", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
-                                             "placements: rows.csv}\n",
-                       "tx,ty,tz\n0,0,0\n\n1,two,3\n"),
+    EXPECT_EQ(rows_error("word_row", "tx,ty,tz\n0,0,0\n\n1,two,3\n"),
               "DIR/rows.csv:4:3: error: 'ty' must be a number, got 'two'");
-    EXPECT_EQ(error_of("inf_row", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
-                                            "placements: rows.csv}\n",
-                       "tx, ty, tz\n0, 0, inf\n"),
+    EXPECT_EQ(rows_error("inf_row", "tx, ty, tz\n0, 0, inf\n"),
               "DIR/rows.csv:2:7: error: 'tz' must be finite, got inf");
-    EXPECT_EQ(error_of("zero_row", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
-                                             "placements: rows.csv}\n",
-                       "scale,tx,ty,tz\n0,1,2,3\n"),
+    EXPECT_EQ(rows_error("zero_row", "scale,tx,ty,tz\n0,1,2,3\n"),
               "DIR/rows.csv:2:1: error: 'scale' must not be 0");
-    EXPECT_EQ(error_of("bad_column", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
-                                               "placements: rows.csv}\n",
-                       "tx,ty,tz,scael\n0,1,2,3\n"),
+    EXPECT_EQ(rows_error("bad_column", "tx,ty,tz,scael\n0,1,2,3\n"),
               "DIR/rows.csv:1:10: error: unknown column 'scael' (did you mean 'scale'?); the columns are tx, ty, "
               "tz, scale, axis_x, axis_y, axis_z, degrees");
-    EXPECT_EQ(error_of("zero_scale", kMeshes + "surfaces:\n  - {type: instance, mesh: ball, material: grey, "
-                                               "transform: {scale: [1, 0, 1]}}\n"),
+    EXPECT_EQ(instance_error("zero_scale", "transform: {scale: [1, 0, 1]}"),
               "DIR/scene.yaml:14:69: error: 'scale' must not be 0 (a number, or one per axis; a negative one mirrors)");
-    EXPECT_EQ(error_of("nan_scale", kMeshes + "surfaces:\n  - {type: instance, mesh: ball, material: grey, "
-                                              "transform: {scale: .nan}}\n"),
+    EXPECT_EQ(instance_error("nan_scale", "transform: {scale: .nan}"),
               "DIR/scene.yaml:14:69: error: 'scale' must be finite");
     // Fine alone, too small together: 1e-7 x 1e-7 is past the 1e-12 limit.
     EXPECT_EQ(error_of("too_small", kMeshes + "surfaces:\n  - {type: group, transform: {scale: 1e-7}, surfaces: "
@@ -101,14 +98,10 @@ TEST(InstancesCli, EachMistakeIsOneLineAndNothingWritten) {
                                      "transform: {scale: 1e-200}}\n"),
               "DIR/scene.yaml:12:61: error: the transform scales by 1e-200 along an axis; the limit is 1e-12 to 1e12");
     // A row that is fine alone but not under its set's transform: its own line.
-    EXPECT_EQ(error_of("placed_row", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
-                                               "placements: rows.csv, transform: {scale: 1e-6}}\n",
-                       "tx,ty,tz,scale\n0,0,0,1\n\n1,2,3,1e-7\n"),
+    EXPECT_EQ(rows_error("placed_row", "tx,ty,tz,scale\n0,0,0,1\n\n1,2,3,1e-7\n", ", transform: {scale: 1e-6}"),
               "DIR/rows.csv:4:1: error: the transform scales by 1e-13 along an axis; the limit is 1e-12 to 1e12 "
               "(the row placed by its set and groups)");
-    EXPECT_EQ(error_of("huge_row", kMeshes + "surfaces:\n  - {type: instances, mesh: ball, material: grey, "
-                                             "placements: rows.csv}\n",
-                       "tx,ty,tz\n0,0,+1e999\n"),
+    EXPECT_EQ(rows_error("huge_row", "tx,ty,tz\n0,0,+1e999\n"),
               "DIR/rows.csv:2:5: error: 'tz' must be finite, got +1e999");
     EXPECT_EQ(error_of("far_name", kMeshes + "surfaces:\n  - {type: instance, mesh: zzzzzz, material: grey}\n"),
               "DIR/scene.yaml:14:28: error: undefined mesh 'zzzzzz' (the scene's meshes: ball)");

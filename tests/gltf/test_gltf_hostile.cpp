@@ -325,14 +325,20 @@ TEST(GltfHostile, UrisThatWouldReadOtherFiles) {
             "images: uri '/etc/passwd' is absolute");
 }
 
+// A folder holding secret.bin (a triangle's buffer) and model/m.gltf, whose
+// buffer's uri is `uri`: the path of m.gltf.
+std::string model_beside_a_secret(const TempFolder& dir, const std::string& uri) {
+    Bin bin;
+    const std::string body = triangle_body(bin);
+    dir.write("secret.bin", bin.bytes());
+    return dir.write("model/m.gltf", gltf_json(body, bin, in_file(uri)));
+}
+
 TEST(GltfHostile, PercentEncodedClimbReadsNothingOutside) {
     // tinygltf decodes %2E%2E to "..": the file beside the model's folder
     // exists, and must still not be read.
     TempFolder dir("percent");
-    Bin bin;
-    const std::string body = triangle_body(bin);
-    dir.write("secret.bin", bin.bytes());
-    const std::string path = dir.write("model/m.gltf", gltf_json(body, bin, in_file("%2E%2E/secret.bin")));
+    const std::string path = model_beside_a_secret(dir, "%2E%2E/secret.bin");
     expect_input_error([&] { load_gltf(path); }, path, "climbs out of the model's folder");
 }
 
@@ -340,15 +346,12 @@ TEST(GltfHostile, PercentEncodedClimbReadsNothingOutside) {
 // is harmless as text, but the model must still not read that file.
 TEST(GltfHostile, ALinkOutOfTheFolderReadsNothingOutside) {
     TempFolder dir("link");
-    Bin bin;
-    const std::string body = triangle_body(bin);
-    dir.write("secret.bin", bin.bytes());
-    const std::string path = dir.write("model/m.gltf", gltf_json(body, bin, in_file("data.bin")));
+    const std::string path = model_beside_a_secret(dir, "data.bin");
     std::filesystem::create_symlink(dir.path / "secret.bin", dir.path / "model" / "data.bin");
     expect_input_error([&] { load_gltf(path); }, path,
                        "uri 'data.bin' leads out of the model's folder (through a symbolic link)");
     // A link that stays inside is read.
-    dir.write("model/real.bin", bin.bytes());
+    std::filesystem::copy_file(dir.path / "secret.bin", dir.path / "model" / "real.bin");
     std::filesystem::remove(dir.path / "model" / "data.bin");
     std::filesystem::create_symlink("real.bin", dir.path / "model" / "data.bin");
     EXPECT_EQ(load_gltf(path).scene.meshes.size(), 1u);
