@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/mat3x3.hpp>
 
 namespace fh {
 

@@ -25,9 +25,9 @@ Movie load_movie(const std::string& path);
 Movie load_movie_from_string(const std::string& text, const std::string& path);
 
 // True when the file is a YAML map with a `scene` key, i.e. a movie rather than
-// a scene. False for anything else, glTF files (.gltf JSON has its own "scene"), unreadable, too large, binary, too deeply
-// nested or unparsable files included (loading it as a scene then reports
-// what is wrong).
+// a scene. False for anything else: glTF files (a .gltf's JSON has a "scene"
+// of its own), and unreadable, too large, binary, too deeply nested or
+// unparsable files (loading it as a scene then reports what is wrong).
 bool is_movie_file(const std::string& path);
 
 }  // namespace fh
