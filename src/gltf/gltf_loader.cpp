@@ -73,11 +73,11 @@ public:
             s.materials.push_back(material_of(mat));
             add_surface_of(mat, s.material_names.back(), s);
         }
-        check_geometry_size();
         default_material_ = int(s.materials.size());
         s.material_names.push_back("glTF default");
         s.materials.push_back(material_of(tinygltf::Material{}));
         order_nodes();
+        check_geometry_size();
         for (const int n : order_) add_node(n, s);
         // Each node's own numbers are finite; their products must be too
         // (a scale of 1e200 under another is infinite).
@@ -110,8 +110,8 @@ private:
     // each primitive that shares it is a copy (docs/gltf.md, "Limits").
     void check_geometry_size() const {
         std::vector<bool> shown(m_.meshes.size(), false);
-        for (const tinygltf::Node& n : m_.nodes)
-            if (n.mesh >= 0 && size_t(n.mesh) < shown.size()) shown[size_t(n.mesh)] = true;
+        for (const int n : order_)  // the nodes of the scene shown
+            if (const int mesh = m_.nodes[size_t(n)].mesh; mesh >= 0 && size_t(mesh) < shown.size()) shown[size_t(mesh)] = true;
         std::size_t numbers = 0;
         // One accessor past its own limit is left to the read, which names it.
         auto add = [&](int accessor) {
@@ -314,8 +314,7 @@ private:
     void add_mesh_instances(const tinygltf::Node& node, int at, Scene& s) {
         if (size_t(node.mesh) >= m_.meshes.size()) fail(s.nodes[size_t(at)].name + ": mesh " + std::to_string(node.mesh) + " does not exist");
         const std::vector<glm::dmat4> rows = rows_of(node, s.nodes[size_t(at)].name);
-        const int first_row = rows.empty() ? -1 : int(s.instance_rows.size());
-        s.instance_rows.insert(s.instance_rows.end(), rows.begin(), rows.end());
+        int first_row = -1;  // the rows are kept once an instance uses them
         const tinygltf::Mesh& mesh = m_.meshes[size_t(node.mesh)];
         // A morphed or skinned mesh is this node's own copy: its pose is the node's.
         const size_t targets = morph_target_count(m_, node.mesh, read_);
@@ -336,6 +335,10 @@ private:
             if (deformed) sm = add_deformation(node, at, node.mesh, int(p), sm, s);
             const int material = mesh.primitives[p].material;
             if (material >= int(m_.materials.size())) fail("mesh " + std::to_string(node.mesh) + ": material " + std::to_string(material) + " does not exist");
+            if (!rows.empty() && first_row < 0) {
+                first_row = int(s.instance_rows.size());
+                s.instance_rows.insert(s.instance_rows.end(), rows.begin(), rows.end());
+            }
             for (size_t k = 0; k < std::max<size_t>(rows.size(), 1); ++k) {
                 if (s.instances.size() >= kMaxInstances) fail("more than " + std::to_string(kMaxInstances) + " instances");
                 s.instances.push_back({sm, material >= 0 ? material : default_material_, glm::dmat4(1.0), at,

@@ -247,21 +247,29 @@ struct JsonExcess {
 JsonExcess json_excess(const std::string& json) {
     int depth = 0;
     size_t values = 1;
-    bool in_string = false;
+    bool in_string = false, opened = false;  // opened: nothing yet since a '[' or '{'
     for (size_t i = 0; i < json.size(); ++i) {
         const char c = json[i];
         if (in_string) {
             if (c == '\\') ++i;
             else if (c == '"') in_string = false;
-        } else if (c == '"') {
+            continue;
+        }
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') continue;
+        const bool was_opened = opened;
+        opened = false;
+        if (c == '"') {
             in_string = true;
         } else if (c == '[' || c == '{') {
             if (++depth > kMaxJsonNesting) return {i, std::string::npos};
+            // Counted as its first value: an empty one gives it back below.
             if (++values > kMaxGltfJsonValues) return {std::string::npos, i};
+            opened = true;
         } else if (c == ',') {
             if (++values > kMaxGltfJsonValues) return {std::string::npos, i};
         } else if (c == ']' || c == '}') {
             --depth;
+            if (was_opened) --values;
         }
     }
     return {};

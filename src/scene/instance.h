@@ -63,4 +63,8 @@ inline constexpr double kMinTransformScale = 1e-12, kMaxTransformScale = 1e12;
 // when it can.
 std::string unusable_transform(const glm::dmat4& m);
 
+// `m`, or where a movie's frame puts an instance whose composed transform is
+// unusable there: the zero map, which shows nothing (as glTF's scale 0).
+glm::dmat4 usable_or_nothing(const glm::dmat4& m);
+
 }  // namespace fh

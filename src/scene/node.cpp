@@ -28,15 +28,14 @@ std::vector<glm::dmat4> node_matrices(const Scene& scene) {
 void place_nodes(Scene& scene) {
     if (scene.nodes.empty()) return;
     const std::vector<glm::dmat4> world = node_matrices(scene);
-    // A product of finite animated values can still overflow (a scale of
-    // 1e200 under another): such an instance shows nothing, as a scale of
-    // 0, and such a camera or light stays where it last was.
-    glm::dmat4 nothing(0.0);
-    nothing[3][3] = 1;
+    // A product of finite animated values can overflow (a scale of 1e200
+    // under another), or pass what the float tracer carries (1e-12..1e12):
+    // such an instance shows nothing, as a scale of 0, and such a camera or
+    // light stays where it last was.
     for (Instance& i : scene.instances) {
         if (i.node < 0) continue;
         const glm::dmat4 m = i.row < 0 ? world[size_t(i.node)] : world[size_t(i.node)] * scene.instance_rows[size_t(i.row)];
-        i.to_world = is_finite(m) ? m : nothing;
+        i.to_world = usable_or_nothing(m);
     }
     auto origin = [&](int n) { return dvec3(world[size_t(n)][3]); };
     auto axis = [&](int n, const dvec3& a) { return dvec3(glm::dmat3(world[size_t(n)]) * a); };

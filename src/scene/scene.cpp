@@ -56,13 +56,15 @@ void place_surface(Scene& scene, const NamedSurface& surface, const glm::dmat4& 
                       scene.vertex_normals.begin() + std::ptrdiff_t(surface.index));
         break;
     }
+    // A movie's frame may compose a transform the loader would refuse (a
+    // group scaled by 1e7 around an instance by 1e7): not drawn there.
     case SurfaceKind::instance:
-        scene.instances[surface.index].to_world = to_world * surface.transform.matrix();
+        scene.instances[surface.index].to_world = usable_or_nothing(to_world * surface.transform.matrix());
         break;
     case SurfaceKind::instances: {
         const glm::dmat4 set = to_world * surface.transform.matrix();
         for (size_t k = 0; k < surface.count; ++k)
-            scene.instances[surface.index + k].to_world = set * (*surface.local_placements)[k];
+            scene.instances[surface.index + k].to_world = usable_or_nothing(set * (*surface.local_placements)[k]);
         break;
     }
     case SurfaceKind::group: break;  // its members are placed on their own

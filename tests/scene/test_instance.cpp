@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -43,6 +44,39 @@ TEST(UnusableTransform, AxesInOnePlaneAreSingular) {
     m[2] = glm::dvec4(1, 2, 1e-9, 0);  // nearly, but an inverse exists
     EXPECT_EQ(unusable_transform(m), "");
     EXPECT_EQ(unusable_transform(scaled({1, 0, 1})), "the transform is singular (it flattens space: no inverse)");
+}
+
+// Columns of usable lengths, not in one plane, whose inverse carries a
+// direction 3.3e23 times longer (a group scaled by 2e-12 along y around an
+// instance scaled by 1.5e-12 and turned 45 degrees): the float tracer would
+// square that past 1e38.
+TEST(UnusableTransform, AnInverseBeyondTheLimitsIsRefused) {
+    const glm::dmat4 m = scaled({1, 2e-12, 1}) * glm::rotate(glm::dmat4(1.0), M_PI / 4, {0.0, 0.0, 1.0}) *
+                         scaled({1.5e-12, 1.5e-12, 1});
+    EXPECT_NEAR(glm::length(dvec3(m[0])), 1.06e-12, 0.01e-12);
+    EXPECT_EQ(unusable_transform(m), "the transform scales by 3e-24 along an axis; the limit is 1e-12 to 1e12");
+}
+
+// What a movie's frame does with a composed transform: keeps exactly those
+// unusable_transform accepts (its quick test included), the others become
+// the zero map.
+TEST(UnusableTransform, AFramesInstanceIsKeptExactlyWhenUsable) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1), exponent(-14, 14);
+    int kept = 0, dropped = 0;
+    for (int i = 0; i < 20000; ++i) {
+        glm::dmat4 m(1.0);
+        for (int c = 0; c < 3; ++c) m[c] = glm::dvec4(u(rng), u(rng), u(rng), 0) * std::pow(10.0, exponent(rng) * (i % 3 == 0));
+        if (i % 7 == 0) m[2] = m[0] + 1e-13 * m[1];  // nearly in one plane
+        m[3] = glm::dvec4(u(rng), u(rng), u(rng), 1);
+        const bool usable = unusable_transform(m).empty();
+        const glm::dmat4 placed = usable_or_nothing(m);
+        EXPECT_EQ(placed == m, usable) << i;
+        if (!usable) EXPECT_EQ(placed[0], glm::dvec4(0)) << i;
+        (usable ? kept : dropped)++;
+    }
+    EXPECT_GT(kept, 5000);
+    EXPECT_GT(dropped, 3000);
 }
 
 TEST(UnusableTransform, NotFiniteIsSaid) {
