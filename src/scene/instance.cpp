@@ -70,14 +70,15 @@ std::string unusable_transform(const glm::dmat4& m) {
 glm::dmat4 usable_or_nothing(const glm::dmat4& m) {
     // Every frame, for every instance that moved, so first a test without a
     // square root that accepts only what unusable_transform does: columns
-    // of squared length 1e-24..1e24 (so no element past 1e12), |det|^2 >
-    // 1e-24 times their product (the unit columns' volume > 1e-12), and an
-    // inverse whose squares sum to at most 1e24 (its columns no longer than
-    // 1e12; no shorter than 1 / |A| >= 1e-12).
+    // of squared length at least 1e-24 and all squares summing to at most
+    // 1e24 (|A| <= 1e12: no column longer, and no inverse column shorter
+    // than 1 / |A| >= 1e-12), |det|^2 > 1e-24 times the columns' squared
+    // lengths (the unit columns' volume > 1e-12), and an inverse whose
+    // squares sum to at most 1e24 (its columns no longer than 1e12).
     const glm::dmat3 a(m);
     const double c0 = glm::dot(a[0], a[0]), c1 = glm::dot(a[1], a[1]), c2 = glm::dot(a[2], a[2]);
     const double lo = kMinTransformScale * kMinTransformScale, hi = kMaxTransformScale * kMaxTransformScale;
-    if (std::min({c0, c1, c2}) >= lo && std::max({c0, c1, c2}) <= hi && std::isfinite(m[3].x + m[3].y + m[3].z)) {
+    if (std::min({c0, c1, c2}) >= lo && c0 + c1 + c2 <= hi && std::isfinite(m[3].x + m[3].y + m[3].z)) {
         const double det = glm::determinant(a);
         if (det * det > 1e-24 * c0 * c1 * c2) {
             const glm::dmat3 inverse = glm::inverse(a);
