@@ -153,11 +153,7 @@ ShapeChanges Movie::shape_changes() const {
             continue;
         }
         for (const NamedSurface& member : scene.named_surfaces)
-            for (int g = member.group; g >= 0; g = scene.groups[size_t(g)].parent)
-                if (size_t(g) == s.index) {
-                    mark(member);
-                    break;
-                }
+            if (group_holds(scene.groups, s.index, member.group)) mark(member);
     }
     return changes;
 }

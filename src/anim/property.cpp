@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include <glm/vector_relational.hpp>
-
 #include "scene/instance.h"
 
 namespace fh {
@@ -162,9 +160,7 @@ std::string check_value(const Target& t, const dvec3& v) {
     case ValueKind::scale: {
         if (v.x == 0 || v.y == 0 || v.z == 0) return "a scale must not be 0";
         // What a scene's transform may scale by (scene/instance.h).
-        const dvec3 a = glm::abs(v);
-        const bool inside = glm::all(glm::greaterThanEqual(a, dvec3(kMinTransformScale))) &&
-                            glm::all(glm::lessThanEqual(a, dvec3(kMaxTransformScale)));
+        const bool inside = within_scale_limits(v.x) && within_scale_limits(v.y) && within_scale_limits(v.z);
         return inside ? "" : "a scale must be 1e-12 to 1e12 in size";
     }
     default: return "";

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "gltf/gltf_model.h"
 #include "scene/camera.h"
 #include "text/input_error.h"
 
@@ -44,8 +45,7 @@ Camera gltf_camera(const tinygltf::Camera& c, int index, int node, const std::st
 void add_gltf_light(const tinygltf::Light& l, int index, int node, double exposure, Scene& s, const std::string& file) {
     auto fail = [&](const std::string& what) { throw InputError(file, what); };
     const std::string name = l.name.empty() ? "light " + std::to_string(index) : l.name;
-    const dvec3 factor = l.color.size() == 3 ? dvec3(l.color[0], l.color[1], l.color[2]) : dvec3(1);
-    const dvec3 color = 255.0 * glm::clamp(factor, 0.0, 1.0);
+    const dvec3 color = 255.0 * glm::clamp(vec3_or(l.color, dvec3(1)), 0.0, 1.0);
     if (!(l.intensity >= 0) || !std::isfinite(l.intensity)) fail(name + ": intensity must be >= 0");
     const double intensity = exposure * l.intensity / 255;
     if (l.type == "directional") {

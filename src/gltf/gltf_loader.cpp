@@ -20,10 +20,6 @@ namespace fh {
 
 namespace {
 
-dvec3 vec3_or(const std::vector<double>& v, dvec3 fallback) {
-    return v.size() == 3 ? dvec3(v[0], v[1], v[2]) : fallback;
-}
-
 // A value of an extension object, or null.
 const tinygltf::Value* extension_value(const tinygltf::ExtensionMap& extensions, const std::string& name,
                                        const std::string& key) {

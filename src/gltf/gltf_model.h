@@ -16,6 +16,8 @@
 
 #include <tiny_gltf.h>
 
+#include "core/vec.h"
+
 namespace fh {
 
 // Documented limits, checked before anything is allocated for them.
@@ -42,6 +44,12 @@ inline constexpr std::size_t kMaxGltfDeformedVertices = std::size_t(1) << 22;
 inline constexpr int kMaxGltfImageSide = 16384;
 inline constexpr std::size_t kMaxGltfImageTexels = std::size_t(1) << 26;
 inline constexpr std::size_t kMaxGltfImageBytes = std::size_t(1) << 30;
+
+// A glTF member of three numbers (a colour, a translation, a scale) as a
+// vector; `fallback`, its default, when the file leaves it out.
+inline dvec3 vec3_or(const std::vector<double>& v, dvec3 fallback) {
+    return v.size() == 3 ? dvec3(v[0], v[1], v[2]) : fallback;
+}
 
 // The extensions firsthit implements; a file that requires any other is
 // refused, naming it.

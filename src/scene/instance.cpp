@@ -18,6 +18,12 @@ std::vector<glm::dmat4> group_matrices(const std::vector<Group>& groups) {
     return world;
 }
 
+bool group_holds(const std::vector<Group>& groups, std::size_t holder, int group) {
+    for (int g = group; g >= 0; g = groups[size_t(g)].parent)
+        if (size_t(g) == holder) return true;
+    return false;
+}
+
 bool is_finite(const glm::dmat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -40,8 +46,6 @@ std::string scales_by(double scale) {
     return std::string("the transform scales by ") + text + " along an axis; the limit is 1e-12 to 1e12";
 }
 
-bool within_limits(double scale) { return scale >= kMinTransformScale && scale <= kMaxTransformScale; }
-
 }  // namespace
 
 std::string unusable_transform(const glm::dmat4& m) {
@@ -51,7 +55,7 @@ std::string unusable_transform(const glm::dmat4& m) {
     for (int c = 0; c < 3; ++c) {
         const double length = length_of(a[c]);
         if (!(length > 0)) return "the transform is singular (it flattens space: no inverse)";
-        if (!within_limits(length)) return scales_by(length);
+        if (!within_scale_limits(length)) return scales_by(length);
         unit[c] = a[c] / length;
     }
     // The volume of the unit columns' box: 0 when they lie in a plane,
@@ -63,7 +67,7 @@ std::string unusable_transform(const glm::dmat4& m) {
     // inside float's range (1e38). Its inverse's columns bound that.
     const glm::dmat3 inverse = glm::inverse(a);
     for (int c = 0; c < 3; ++c)
-        if (const double length = length_of(inverse[c]); !within_limits(length)) return scales_by(1 / length);
+        if (const double length = length_of(inverse[c]); !within_scale_limits(length)) return scales_by(1 / length);
     return "";
 }
 

@@ -5,6 +5,7 @@
 // not a thousand copies of the triangles.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -51,12 +52,19 @@ struct Group {
 // parent always comes first): world[g] = world[parent] * transform.
 std::vector<glm::dmat4> group_matrices(const std::vector<Group>& groups);
 
+// Whether group `holder` holds what sits in group `group` (-1: the world),
+// at any depth.
+bool group_holds(const std::vector<Group>& groups, std::size_t holder, int group);
+
 // Every element of `m` is finite.
 bool is_finite(const glm::dmat4& m);
 
 // How far a transform may scale along any axis: the float tracer squares
 // directions carried through an instance's maps (and their inverses).
 inline constexpr double kMinTransformScale = 1e-12, kMaxTransformScale = 1e12;
+inline bool within_scale_limits(double scale) {
+    return std::abs(scale) >= kMinTransformScale && std::abs(scale) <= kMaxTransformScale;
+}
 
 // Why `m` cannot place anything -- not finite, scaling an axis outside
 // kMin/kMaxTransformScale, or singular (its axes in a plane) -- or empty

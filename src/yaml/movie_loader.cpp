@@ -281,10 +281,7 @@ void check_sphere_scales(const YamlReader& r, const MapReader::Entry& e, const A
     const NamedSurface& target = scene.named_surfaces[a.target.index];
     if (target.kind != SurfaceKind::group) return;
     const bool holds_sphere = std::any_of(scene.named_surfaces.begin(), scene.named_surfaces.end(), [&](const NamedSurface& s) {
-        if (s.kind != SurfaceKind::sphere) return false;
-        for (int g = s.group; g >= 0; g = scene.groups[size_t(g)].parent)
-            if (size_t(g) == target.index) return true;
-        return false;
+        return s.kind == SurfaceKind::sphere && group_holds(scene.groups, target.index, s.group);
     });
     if (!holds_sphere) return;
     auto even = [](const dvec3& v) { return v.x == v.y && v.y == v.z; };
