@@ -98,7 +98,8 @@ void add_default_camera(Scene& scene) {
 }
 
 void add_default_lights(Scene& scene, const Camera& camera, double exposure, bool key_light) {
-    scene.ambient_lights.push_back({"ambient", dvec3(255), 0.15 * exposure / 255});
+    // Against the materials' ambient strength of 0.1: 0.15 of a surface's colour.
+    scene.ambient_lights.push_back({"ambient", dvec3(255), 1.5 * exposure / 255});
     if (!key_light) return;
     // 1 lux travelling as the camera looks, and down and to the right: from
     // behind its upper left.

@@ -23,7 +23,8 @@ void add_gltf_light(const tinygltf::Light& light, int index, int node, double ex
 
 // A perspective camera framing the scene's bounds from the front, above.
 void add_default_camera(Scene& scene);
-// Always an ambient light of 0.15; with key_light, a key light from behind
+// Always an ambient light of 1.5 (0.15 of a colour, with the materials'
+// ambient strength of 0.1); with key_light, a key light from behind
 // the camera's upper left. exposure: as add_gltf_light's.
 void add_default_lights(Scene& scene, const Camera& camera, double exposure, bool key_light);
 

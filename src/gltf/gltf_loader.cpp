@@ -32,7 +32,10 @@ const tinygltf::Value* extension_value(const tinygltf::ExtensionMap& extensions,
 // c = 255 baseColor; a metal's highlight is tinted and its diffuse part only
 // what roughness scatters (a rough metal -- glTF's default material -- looks
 // matte, a polished one mirrors); roughness r widens the highlight
-// (Blinn-Phong exponent 2 / a^2 - 2, a = r^2) and dims it.
+// (Blinn-Phong exponent 2 / a^2 - 2, a = r^2) and dims it. The ambient
+// strength is the report's materials' 0.1, so that a model placed in a scene
+// file is lit by that file's ambient light as the file's own surfaces are
+// (at 1 the bunny scene's ambient light alone made the engine white).
 Material<double> material_of(const tinygltf::Material& m) {
     const auto& pbr = m.pbrMetallicRoughness;
     const dvec3 base = pbr.baseColorFactor.size() >= 3
@@ -42,7 +45,7 @@ Material<double> material_of(const tinygltf::Material& m) {
     Material<double> out;
     out.ambient_color = out.diffuse_color = 255.0 * glm::clamp(base, 0.0, 1.0);
     out.specular_color = metal * out.diffuse_color + (1 - metal) * dvec3(255);
-    out.ambient = 1;
+    out.ambient = 0.1;
     out.diffuse = (1 - metal) + metal * rough;
     out.specular = (0.04 + 0.96 * metal) * (1 - rough);
     const double a = std::max(rough * rough, 0.01);

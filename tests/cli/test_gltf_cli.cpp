@@ -12,6 +12,7 @@
 #include "cli/run_command.h"
 #include "core/vec.h"
 #include "gltf/gltf_builder.h"
+#include "support/png_read.h"
 
 namespace fh::test {
 namespace {
@@ -102,6 +103,27 @@ TEST(GltfCli, ExportOfAYamlSceneHoldingTheFile) {
     write_yaml_scene(dir, "view_point: [0, -20, 5], look_at: [0, 1, 0]",
                      "{type: gltf, name: model, file: model.gltf, transform: {translate: [10, 0, 0]}}");
     expect_near(exported((dir / "scene.yaml").string(), dir), {{12, -6, 4}, {14, -6, 4}, {12, -6, 6}});
+}
+
+// Placed in a scene file, a model is lit by that file's lights as the
+// file's own surfaces are: glTF's materials have the report's ambient
+// strength of 0.1. The model's triangle has glTF's default material (white,
+// colour 255) and spans x 2..4, z 4..6 at y = -6; under the bunny scene's
+// ambient light of 0.006 alone it is 0.006 x 0.1 x 255 x 255 = 39.0, as a
+// YAML material of ambient 0.1 would be. (An ambient strength of 1 made it
+// 390, clamped to 255: a model placed in the bunny's scene came out white.)
+TEST(GltfCli, AModelInASceneFileIsLitByItsLightsAsItsOwnSurfaces) {
+    const fs::path dir = model_dir("gltf_lit_by_yaml");
+    std::ofstream(dir / "scene.yaml")
+        << "lights:\n  ambient: {type: ambient, color: [255, 255, 255], intensity: 0.006}\n"
+           "cameras:\n  front: {type: perspective, width: 32, height: 32, view_point: [2.6, -20, 4.6], "
+           "look_at: [0, 1, 0], up: [0, 0, 1], projection_distance: 10}\n"
+           "surfaces:\n  - {type: gltf, name: model, file: model.gltf}\n";
+    const auto r = run_firsthit("render " + (dir / "scene.yaml").string() + " -o " + (dir / "out.png").string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Image image = read_png((dir / "out.png").string());
+    ASSERT_EQ(image.width, 32);
+    for (int ch = 0; ch < 3; ++ch) EXPECT_EQ(image.pixel(16, 16)[ch], 39) << "channel " << ch;
 }
 
 // The glTF demo placed in a YAML scene and moved by a movie: its group by a

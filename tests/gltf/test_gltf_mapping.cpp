@@ -32,7 +32,8 @@ void expect_light(const Light& l, const std::string& name, const dvec3& color, d
     EXPECT_NEAR(l.intensity, intensity, 1e-15) << name;
 }
 
-// A material against values worked out by hand (its ambient always 1).
+// A material against values worked out by hand (its ambient always the
+// report's 0.1).
 struct Shading {
     dvec3 color, specular_color;
     double diffuse, specular, exponent;
@@ -43,7 +44,7 @@ void expect_shading(const Material<double>& m, const Shading& want) {
     expect_vec(m.ambient_color, want.color, 1e-9);
     expect_vec(m.diffuse_color, want.color, 1e-9);
     expect_vec(m.specular_color, want.specular_color, 1e-9);
-    EXPECT_EQ(m.ambient, 1);
+    EXPECT_EQ(m.ambient, 0.1);
     EXPECT_NEAR(m.diffuse, want.diffuse, 1e-12);
     EXPECT_NEAR(m.specular, want.specular, 1e-12);
     EXPECT_NEAR(m.phong_exponent, want.exponent, 1e-6);
@@ -180,7 +181,8 @@ TEST(GltfLights, PunctualLightsInTheDocumentedUnits) {
 }
 
 TEST(GltfLights, AFileWithoutLightsGetsTheKeyAndAmbientTimesExposure) {
-    // Exposure 2: ambient 2 x 0.15 / 255, key 2 x 1 lux / 255, both white. The
+    // Exposure 2: ambient 2 x 1.5 / 255 (0.15 of a colour at the materials'
+    // ambient strength of 0.1), key 2 x 1 lux / 255, both white. The
     // key travels along -w - 0.8 v + 0.5 u of the camera's basis (w =
     // -look_at, u = up x w, v = w x u), over |(0.5, -0.8, -1)| = sqrt 1.89: its
     // parts 0.3636965 along u (right), -0.5819144 along v (down), 0.7273930
@@ -189,7 +191,7 @@ TEST(GltfLights, AFileWithoutLightsGetsTheKeyAndAmbientTimesExposure) {
     Bin bin;
     const GltfScene g = gltf_scene(dir.write("tri.gltf", gltf_json(triangle_body(bin), bin)), 2);
     ASSERT_EQ(g.scene.ambient_lights.size(), 1u);
-    expect_light(g.scene.ambient_lights[0], "ambient", {255, 255, 255}, 0.3 / 255);
+    expect_light(g.scene.ambient_lights[0], "ambient", {255, 255, 255}, 3.0 / 255);
     ASSERT_EQ(g.scene.directional_lights.size(), 1u);
     const auto& key = g.scene.directional_lights[0];
     expect_light(key, "key", {255, 255, 255}, 2.0 / 255);

@@ -12,7 +12,8 @@
 // straight down on them with an orthographic camera; the sun shines along
 // -z (or slanted) with an ambient light beside it. A white, matte, non-metal
 // surface (metallicFactor 0, roughnessFactor 1: diffuse 1, specular 0)
-// lit by ambient 0.2 and a sun of 0.6 straight down is 255 (0.2 + 0.6) = 204.
+// lit by ambient 0.2 and a sun of 0.6 straight down is 255 (0.2 + 0.6) = 204
+// (an ambient light of 2 against the material's ambient strength of 0.1).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -219,7 +220,7 @@ struct Lighting {
 // The file placed z-up, lit.
 Scene lit(const std::string& json, const Lighting& l = {}) {
     Scene s = z_up(json);
-    s.ambient_lights.push_back({"ambient", dvec3(255), l.ambient / 255});
+    s.ambient_lights.push_back({"ambient", dvec3(255), l.ambient / 0.1 / 255});
     DirectionalLight<double> sun;
     sun.name = "sun";
     sun.color = dvec3(255);
