@@ -113,10 +113,14 @@ void render_centres(const S& shader, const CameraRays<T>& camera, int x0, int x1
             const auto* row = reinterpret_cast<const std::uint8_t*>(&rgb);
             for (int j = 0; j < BH; ++j) std::memcpy(image.pixel(b.x, b.y + j), row + 3 * BW * j, 3 * BW);
         } else {  // a block cut by the tile's edge
+            // As plain bytes: GCC 12 took the vectors' lanes read one at a
+            // time for uninitialized (-Wmaybe-uninitialized).
+            std::uint8_t plain[3][W];
+            std::memcpy(plain, bytes, sizeof plain);
             for (int j = 0; j < b.ny; ++j) {
                 std::uint8_t* out = image.pixel(b.x, b.y + j);
                 for (int i = 0; i < b.nx; ++i)
-                    for (int ch = 0; ch < 3; ++ch) out[3 * i + ch] = bytes[ch][j * BW + i];
+                    for (int ch = 0; ch < 3; ++ch) out[3 * i + ch] = plain[ch][j * BW + i];
             }
         }
         rays = next;
