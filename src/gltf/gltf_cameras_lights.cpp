@@ -65,9 +65,9 @@ void add_gltf_light(const tinygltf::Light& l, int index, int node, double exposu
         // (0, pi/2] by the extension; pi/2 written as a float rounds a little past it.
         if (!(spot.max_angle > 0) || (l.type == "spot" && spot.max_angle > double(float(std::numbers::pi / 2))))
             fail(name + ": outerConeAngle must be in (0, pi/2]");
-        // Not drawn (the report's spot falls off linearly), but checked.
         if (l.type == "spot" && !(l.spot.innerConeAngle >= 0 && l.spot.innerConeAngle < l.spot.outerConeAngle))
             fail(name + ": innerConeAngle must be in [0, outerConeAngle)");
+        if (l.type == "spot") spot.inner_angle = l.spot.innerConeAngle;
         s.spot_lights.push_back(spot);
     } else {
         fail(name + ": light type '" + l.type + "' is not directional, point or spot");

@@ -4,6 +4,10 @@
 //     intensity = I * (1 - theta / max_angle) / d^2   for theta <= max_angle, else 0.
 // The report's formula (a parenthesis missing) divides by (1 - theta/max_angle)
 // and so blows up at the cone's edge; this one falls smoothly to zero there.
+// A glTF spot's inner cone (inner_angle > 0) is lit fully, the falloff
+// then linear in theta from inner_angle to max_angle:
+//     min(1, (1 - theta / max_angle) * max_angle / (max_angle - inner_angle)),
+// which is the report's factor itself when inner_angle is 0.
 #pragma once
 
 #include <cmath>
@@ -39,6 +43,7 @@ struct SpotLight {
     Vec3<T> position{0};
     Vec3<T> axis{0, 0, -1};  // unit; the cone's axis, pointing away from the light
     T max_angle = T(2 * 3.14159265358979323846);  // radians; infinite: a point light, no falloff with angle
+    T inner_angle = 0;  // radians, in [0, max_angle): lit fully out to it (a glTF spot's inner cone)
     bool on = true;
     int node = -1;  // a glTF light: the scene node that places and points it (scene/node.h)
 
@@ -65,7 +70,9 @@ struct SpotLight {
         // instructions. falloff * inv_distance first, so a falloff of 0
         // stays 0 however large inv_distance^2 would be.)
         const T cap = std::sqrt(std::numeric_limits<T>::max());
-        const Lanes<T> cone = max(splat(T(0)), T(1) - theta * (T(1) / max_angle));
+        // Times 1 for the report's spots: the same bits as without it.
+        const T edge = inner_angle > 0 && inner_angle < max_angle ? max_angle / (max_angle - inner_angle) : T(1);
+        const Lanes<T> cone = min(splat(T(1)), max(splat(T(0)), T(1) - theta * (T(1) / max_angle)) * edge);
         const Lanes<T> falloff = min(splat(cap), intensity * (cone * inv_distance) * inv_distance);
         r.intensity = select(defined & inside, falloff, splat(T(0)));
         return r;
