@@ -51,6 +51,14 @@ inline dvec3 vec3_or(const std::vector<double>& v, dvec3 fallback) {
     return v.size() == 3 ? dvec3(v[0], v[1], v[2]) : fallback;
 }
 
+// A value of an extension object, or null.
+inline const tinygltf::Value* extension_value(const tinygltf::ExtensionMap& extensions, const std::string& name,
+                                              const std::string& key) {
+    const auto it = extensions.find(name);
+    if (it == extensions.end() || !it->second.IsObject() || !it->second.Has(key)) return nullptr;
+    return &it->second.Get(key);
+}
+
 // The extensions firsthit implements; a file that requires any other is
 // refused, naming it.
 const std::vector<std::string>& supported_gltf_extensions();

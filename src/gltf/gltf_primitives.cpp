@@ -1,0 +1,164 @@
+#include "gltf/gltf_primitives.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "meshes/mesh_loader.h"
+
+namespace fh {
+
+namespace {
+
+// A primitive's reads, every problem through the accessor reader's
+// InputError.
+class PrimitiveReader {
+public:
+    PrimitiveReader(const tinygltf::Model& model, const AccessorReader& read) : m_(model), read_(read) {}
+
+    void check_primitive(const tinygltf::Primitive& prim, const std::string& what) const {
+        const auto position = prim.attributes.find("POSITION");
+        if (position == prim.attributes.end()) fail(what + ": no POSITION attribute");
+        const size_t vertices = read_.count(position->second, what + " POSITION");
+        for (const auto& [name, accessor] : prim.attributes)
+            if (read_.count(accessor, what + " " + name) != vertices)
+                fail(what + ": " + name + " has " + std::to_string(read_.count(accessor, what)) + " elements, POSITION " +
+                     std::to_string(vertices));
+        const size_t n = prim.indices >= 0 ? read_.count(prim.indices, what + " indices") : vertices;
+        const bool ok = prim.mode == TINYGLTF_MODE_TRIANGLES ? n % 3 == 0
+                        : prim.mode == TINYGLTF_MODE_LINE ? n % 2 == 0
+                        : prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP || prim.mode == TINYGLTF_MODE_TRIANGLE_FAN ? n >= 3
+                        : prim.mode == TINYGLTF_MODE_LINE_STRIP || prim.mode == TINYGLTF_MODE_LINE_LOOP ? n >= 2
+                                                                                                       : n >= 1;
+        if (!ok) fail(what + ": " + std::to_string(n) + (prim.indices >= 0 ? " indices" : " vertices") +
+                      " do not make whole " + (prim.mode <= TINYGLTF_MODE_LINE_STRIP ? "lines" : "triangles") +
+                      " in mode " + std::to_string(prim.mode));
+        if (prim.material < 0 || size_t(prim.material) >= m_.materials.size()) return;
+        const tinygltf::Material& mat = m_.materials[size_t(prim.material)];
+        for (const int set : {mat.pbrMetallicRoughness.baseColorTexture.index >= 0 ? base_color_set(mat) : -1,
+                              mat.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 ? mat.pbrMetallicRoughness.metallicRoughnessTexture.texCoord : -1,
+                              mat.normalTexture.index >= 0 ? mat.normalTexture.texCoord : -1,
+                              mat.occlusionTexture.index >= 0 ? mat.occlusionTexture.texCoord : -1,
+                              mat.emissiveTexture.index >= 0 ? mat.emissiveTexture.texCoord : -1})
+            if (set >= 0 && !prim.attributes.count("TEXCOORD_" + std::to_string(set)))
+                fail(what + ": its material reads TEXCOORD_" + std::to_string(set) + ", which it does not have");
+    }
+
+    // The TEXCOORD set a material's base colour texture reads: its own,
+    // or its KHR_texture_transform's texCoord, which overrides it.
+    static int base_color_set(const tinygltf::Material& mat) {
+        const tinygltf::TextureInfo& info = mat.pbrMetallicRoughness.baseColorTexture;
+        if (const tinygltf::Value* t = extension_value(info.extensions, "KHR_texture_transform", "texCoord"))
+            if (t->IsInt()) return t->GetNumberAsInt();
+        return info.texCoord;
+    }
+
+    // The texture coordinates the primitive's base colour texture reads
+    // (TEXCOORD_n, n from the texture or its KHR_texture_transform), moved
+    // by that transform: uv' = translate(offset) rotate(rotation) scale(scale) uv.
+    // Empty when its material has no such texture.
+    std::vector<dvec2> read_uvs(const tinygltf::Primitive& prim, const std::string& what) const {
+        if (prim.material < 0 || size_t(prim.material) >= m_.materials.size()) return {};
+        const tinygltf::TextureInfo& info = m_.materials[size_t(prim.material)].pbrMetallicRoughness.baseColorTexture;
+        if (info.index < 0) return {};
+        int set = info.texCoord;
+        dvec2 offset(0), scale(1);
+        double rotation = 0;
+        if (const auto it = info.extensions.find("KHR_texture_transform"); it != info.extensions.end()) {
+            const tinygltf::Value& x = it->second;
+            auto pair = [&](const char* key, dvec2& into) {
+                if (!x.Has(key)) return;
+                const tinygltf::Value& v = x.Get(key);
+                if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+                    fail(what + ": KHR_texture_transform's " + key + " needs 2 numbers");
+                into = {v.Get(0).GetNumberAsDouble(), v.Get(1).GetNumberAsDouble()};
+            };
+            pair("offset", offset);
+            pair("scale", scale);
+            if (x.Has("rotation")) {
+                if (!x.Get("rotation").IsNumber()) fail(what + ": KHR_texture_transform's rotation is not a number");
+                rotation = x.Get("rotation").GetNumberAsDouble();
+            }
+            if (x.Has("texCoord")) {
+                if (!x.Get("texCoord").IsInt() || x.Get("texCoord").GetNumberAsInt() < 0)
+                    fail(what + ": KHR_texture_transform's texCoord is not a set index");
+                set = x.Get("texCoord").GetNumberAsInt();
+            }
+            if (!std::isfinite(offset.x + offset.y + scale.x + scale.y + rotation))
+                fail(what + ": KHR_texture_transform's numbers are not finite");
+        }
+        const auto attribute = prim.attributes.find("TEXCOORD_" + std::to_string(set));
+        if (attribute == prim.attributes.end())
+            fail(what + ": its material reads TEXCOORD_" + std::to_string(set) + ", which it does not have");
+        const std::vector<double> t = read_.numbers(attribute->second, 2, what + " TEXCOORD_" + std::to_string(set));
+        const double c = std::cos(rotation), sn = std::sin(rotation);
+        std::vector<dvec2> uvs(t.size() / 2);
+        for (size_t i = 0; i < uvs.size(); ++i) {
+            const double u = scale.x * t[2 * i], v = scale.y * t[2 * i + 1];
+            uvs[i] = {c * u + sn * v + offset.x, -sn * u + c * v + offset.y};
+            if (!std::isfinite(uvs[i].x) || !std::isfinite(uvs[i].y))
+                fail(what + ": KHR_texture_transform takes TEXCOORD_" + std::to_string(set) + " " +
+                     std::to_string(i) + " past a double's range");
+        }
+        return uvs;
+    }
+
+    Mesh read_primitive(const tinygltf::Primitive& prim, const std::string& what) const {
+        const auto position = prim.attributes.find("POSITION");
+        if (position == prim.attributes.end()) fail(what + ": no POSITION attribute");
+        Mesh mesh;
+        const std::vector<double> p = read_.numbers(position->second, 3, what + " POSITION");
+        const size_t vertices = p.size() / 3;
+        for (size_t i = 0; i < vertices; ++i) mesh.positions.push_back({p[3 * i], p[3 * i + 1], p[3 * i + 2]});
+        if (const auto normal = prim.attributes.find("NORMAL"); normal != prim.attributes.end()) {
+            const std::vector<double> n = read_.numbers(normal->second, 3, what + " NORMAL");
+            if (n.size() != p.size()) fail(what + ": NORMAL has " + std::to_string(n.size() / 3) + " elements, POSITION " + std::to_string(vertices));
+            for (size_t i = 0; i < vertices; ++i) mesh.normals.push_back({n[3 * i], n[3 * i + 1], n[3 * i + 2]});
+            mesh.smooth = true;
+        }
+        std::vector<std::uint32_t> index;
+        if (prim.indices >= 0) {
+            index = read_.indices(prim.indices, std::uint32_t(std::min<size_t>(vertices, 0xffffffffu)), what + " indices");
+        } else {
+            if (vertices > 0xffffffffu) fail(what + ": too many vertices");
+            index.resize(vertices);
+            for (size_t i = 0; i < vertices; ++i) index[i] = std::uint32_t(i);
+        }
+        // Triangles, strips and fans as the specification numbers them.
+        auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) { mesh.triangles.push_back({a, b, c}); };
+        const size_t n = index.size();
+        if (prim.mode == TINYGLTF_MODE_TRIANGLES) {
+            for (size_t i = 0; i + 2 < n; i += 3) add(index[i], index[i + 1], index[i + 2]);
+        } else if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            for (size_t i = 0; i + 2 < n; ++i)
+                add(index[i], index[i + 1 + i % 2], index[i + 2 - i % 2]);
+        } else {
+            for (size_t i = 1; i + 1 < n; ++i) add(index[i], index[i + 1], index[0]);
+        }
+        if (mesh.triangles.size() > kMaxMeshTriangles)
+            fail(what + ": " + std::to_string(mesh.triangles.size()) + " triangles (the limit is " + std::to_string(kMaxMeshTriangles) + ")");
+        return mesh;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& what) const { read_.fail(what); }
+
+    const tinygltf::Model& m_;
+    const AccessorReader& read_;
+};
+
+}  // namespace
+
+void check_gltf_primitive(const tinygltf::Model& model, const AccessorReader& read, const tinygltf::Primitive& prim,
+                          const std::string& what) {
+    PrimitiveReader(model, read).check_primitive(prim, what);
+}
+
+Mesh read_gltf_primitive(const tinygltf::Model& model, const AccessorReader& read, const tinygltf::Primitive& prim,
+                         const std::string& what) {
+    const PrimitiveReader reader(model, read);
+    Mesh mesh = reader.read_primitive(prim, what);
+    mesh.uvs = reader.read_uvs(prim, what);
+    return mesh;
+}
+
+}  // namespace fh
