@@ -1,6 +1,6 @@
 // A glTF file as firsthit renders it on its own (`firsthit render|frames|
 // bench|view|export MODEL.glb`): its scene, turned z-up, with a default
-// camera and lights where it has none (gltf/gltf_loader.h), and its
+// camera and lights where it has none (gltf/gltf_cameras_lights.h), and its
 // animations as a movie -- frame i at i / fps seconds, as long as the
 // longest animation chosen.
 #pragma once
@@ -23,7 +23,7 @@ struct GltfMovieRequest {
 
 // A glTF file as a scene of its own: placed z-up, with a default camera
 // where it has none, a key light (from behind its first camera's upper
-// left) where it has no light, and an ambient light (gltf/gltf_loader.h).
+// left) where it has no light, and an ambient light (gltf/gltf_cameras_lights.h).
 struct GltfScene {
     Scene scene;
     std::vector<NodeAnimation> animations;
