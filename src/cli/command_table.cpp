@@ -90,10 +90,12 @@ const std::vector<CommandSpec>& all_commands() {
          "ms shows); --depth the smallest whose isolated_psnr is inf or above about 50 dB; --precision "
          "float where its isolated_psnr is that high and its ms lower.",
          size_pointers()},
-        {"info", "FILE", "what a scene or movie file holds",
-         "Prints what a scene or movie file holds, as key: value lines: for a movie its frame count, fps, "
-         "seconds, camera and image size; for a scene its surfaces, lights and cameras.",
-         {},
+        {"info", "FILE", "what a scene, movie or glTF file holds",
+         "Prints what a scene, movie or glTF file holds, as key: value lines: for a movie its frame count, "
+         "fps, seconds, camera and image size; for a scene its surfaces, lights and cameras. The flags "
+         "choose as render's do, and are checked as render checks them: --frame adds the frame and its "
+         "time, --camera the camera chosen.",
+         {"--frame", "--camera", "--animation", "--fps", "--exposure"},
          "",
          {}},
         {"export", "FILE", "a frame's triangles in world space to a .ply or .obj file",

@@ -1,5 +1,6 @@
-// firsthit info FILE: what a scene or movie file holds, as key: value lines
-// (the encode script reads a movie's fps from it).
+// firsthit info FILE: what a scene, movie or glTF file holds, as key: value
+// lines (the encode script reads a movie's fps from it); --camera, --frame,
+// --animation, --fps and --exposure as render takes them.
 #include <iostream>
 
 #include "anim/frame_selection.h"
@@ -8,6 +9,7 @@
 #include "gltf/gltf_movie.h"
 #include "cli/commands.h"
 #include "cli/args.h"
+#include "cli/job.h"
 #include "text/input_error.h"
 #include "yaml/movie_loader.h"
 #include "yaml/scene_loader.h"
@@ -47,8 +49,9 @@ void print_scene(const Scene& s, const RenderSettings& settings) {
 }
 
 
-// The lines a movie and a glTF file share.
-void print_movie(const std::string& kind, const Movie& m) {
+// The lines a movie and a glTF file share; with --frame, that frame and
+// its time.
+void print_movie(const std::string& kind, const Movie& m, const JobRequest& request) {
     std::cout << "kind: " << kind << "\n"
               << "frames: " << m.frame_count() << "\n"
               << "fps: " << m.fps << "\n"
@@ -57,18 +60,24 @@ void print_movie(const std::string& kind, const Movie& m) {
               << "width: " << m.camera.width << "\n"
               << "height: " << m.camera.height << "\n"
               << "first_frame_file: " << FrameFiles{}.name(0, m.frame_count()) << "\n";
+    if (request.frame) {
+        const int frame = parse_int(*request.frame, "--frame", 0, m.frame_count() - 1);
+        std::cout << "frame: " << frame << "\n"
+                  << "time: " << frame / m.fps << "\n";
+    }
 }
 }  // namespace
 
 int run_info(const Args& args) {
-    if (args.positional().size() != 1) throw UsageError("expected one FILE");
-    const std::string file = args.positional()[0];
+    JobRequest request = job_request_from_args(args);
+    const std::string& file = request.file;
     if (is_gltf_file(file)) {
         GltfScene g = gltf_scene(file);
         std::vector<std::string> animations;
         for (const NodeAnimation& a : g.animations) animations.push_back(a.name);
-        const Movie m = gltf_movie(std::move(g), {file, std::nullopt, std::nullopt, 30, 1});
-        print_movie("gltf", m);
+        const Movie m = gltf_movie(std::move(g), {file, request.camera, request.animation, request.fps.value_or(30),
+                                                  request.exposure.value_or(1)});
+        print_movie("gltf", m, request);
         std::cout << "nodes: " << m.scene.nodes.size() << "\n"
                   << "animations:";
         for (const std::string& a : animations) std::cout << " '" << a << "'";
@@ -81,15 +90,19 @@ int run_info(const Args& args) {
         print_scene(m.scene, m.settings);
         return 0;
     }
-    if (is_movie_file(file)) {
-        const Movie m = load_movie(file);
-        print_movie("movie", m);
-        print_scene(m.scene, m.settings);
+    // A scene or movie file, its flags checked as render checks them.
+    request.check_cameras = false;
+    request.movie_camera_note = "info shows the camera it films with";
+    const Job job = load_job(request);  // before printing: an error prints nothing else
+    if (job.is_movie_file) {
+        print_movie("movie", job.movie, request);
     } else {
-        const SceneFile scene = load_scene(file);  // before printing: an error prints nothing else
         std::cout << "kind: scene\n";
-        print_scene(scene.scene, scene.settings);
+        if (request.camera)
+            std::cout << "camera: " << job.camera.name << "\nwidth: " << job.camera.width << "\nheight: "
+                      << job.camera.height << "\n";
     }
+    print_scene(job.movie.scene, job.movie.settings);
     return 0;
 }
 

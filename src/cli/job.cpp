@@ -54,7 +54,7 @@ const std::string& one_file(const Args& args) {
     return args.positional()[0];
 }
 
-Job job_from_args(const Args& args, const char* movie_camera_note) {
+JobRequest job_request_from_args(const Args& args) {
     one_file(args);
     JobRequest request;
     request.file = args.positional()[0];
@@ -64,6 +64,11 @@ Job job_from_args(const Args& args, const char* movie_camera_note) {
     request.animation = args.value("--animation");
     if (args.has("--fps")) request.fps = args.number("--fps", 30, 1e-3, 1000);
     if (args.has("--exposure")) request.exposure = args.number("--exposure", 1, 0, 1e6);
+    return request;
+}
+
+Job job_from_args(const Args& args, const char* movie_camera_note) {
+    JobRequest request = job_request_from_args(args);
     if (movie_camera_note) request.movie_camera_note = movie_camera_note;
     Job job = load_job(request);
     if (!args.has("--quiet")) print_warnings(job);

@@ -18,6 +18,9 @@ namespace fh {
 // after "FILE is a movie (".
 Job job_from_args(const Args& args, const char* movie_camera_note = nullptr);
 
+// The same flags as a request, not yet loaded.
+JobRequest job_request_from_args(const Args& args);
+
 // --resolution WxH or --scale F (not both); neither: no override.
 SizeOverride size_from_args(const Args& args);
 

@@ -114,5 +114,35 @@ TEST(RenderCli, InfoDescribesAMovie) {
         EXPECT_NE(r.out.find(line), std::string::npos) << line << " in\n" << r.out;
 }
 
+// info takes render's choosing flags (INTERFACE.md: render|info|bench|view
+// MODEL.glb [--camera] [--frame] [--fps]) and checks them as render does.
+TEST(RenderCli, InfoTakesTheFlagsThatChooseAFrame) {
+    // The demo's animation is 4 s long: at 10 fps frames 0 .. 40, frame 5 at
+    // 5 / 10 = 0.5 s, and the movie 41 / 10 = 4.1 s long.
+    const auto g = run_firsthit("info " + source_path("animations/gltf/demo.gltf") + " --fps 10 --frame 5 --camera 0");
+    ASSERT_EQ(g.status, 0) << g.err;
+    EXPECT_NE(g.out.find("frames: 41\nfps: 10\nseconds: 4.1\ncamera: front\n"), std::string::npos) << g.out;
+    EXPECT_NE(g.out.find("\nframe: 5\ntime: 0.5\n"), std::string::npos) << g.out;
+
+    const auto m = run_firsthit("info " + source_path("animations/movie2.yaml") + " --frame 45");
+    ASSERT_EQ(m.status, 0) << m.err;
+    EXPECT_NE(m.out.find("\nframe: 45\ntime: 1.5\n"), std::string::npos) << m.out;
+
+    const auto s = run_firsthit("info " + source_path("animations/scene.yaml") + " --camera orthographic");
+    ASSERT_EQ(s.status, 0) << s.err;
+    EXPECT_NE(s.out.find("kind: scene\ncamera: orthographic\nwidth: 800\nheight: 800\n"), std::string::npos) << s.out;
+
+    const auto past = run_firsthit("info " + source_path("animations/movie2.yaml") + " --frame 300");
+    EXPECT_EQ(past.status, 2);
+    EXPECT_EQ(past.err, "firsthit: error: --frame must be in [0, 299], got 300\n");
+    EXPECT_TRUE(past.out.empty()) << past.out;
+    const auto scene_frame = run_firsthit("info " + source_path("animations/scene.yaml") + " --frame 2");
+    EXPECT_EQ(scene_frame.status, 2);
+    EXPECT_NE(scene_frame.err.find("--frame applies to movie files"), std::string::npos) << scene_frame.err;
+    const auto yaml_fps = run_firsthit("info " + source_path("animations/movie2.yaml") + " --fps 10");
+    EXPECT_EQ(yaml_fps.status, 2);
+    EXPECT_NE(yaml_fps.err.find("--fps applies to glTF files"), std::string::npos) << yaml_fps.err;
+}
+
 }  // namespace
 }  // namespace fh::test
