@@ -5,7 +5,7 @@
 //     OFF face index out of range (clamped to the last vertex), a file that
 //     ends early (OFF, ASCII STL), a PLY value it cannot parse (read as 0). We
 //     install a logger that prints nothing and collects them per thread; any
-//     message not known to be harmless fails the load.
+//     message not known to be harmless fails the load (meshes/assimp_messages.h).
 //   - an OFF index "-1" it reads as 0 and reports nowhere: the face comes out
 //     degenerate, so an OFF file with degenerate faces is read again for it.
 //   - it names no line for what it read wrong (a NaN, a clamped index): the
@@ -39,9 +39,7 @@
 //     refused first (src/meshes/obj_lines.h).
 #include "meshes/mesh_loader.h"
 
-#include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
-#include <assimp/Logger.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -55,12 +53,12 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <mutex>
 #include <new>
 #include <sstream>
 #include <unordered_map>
 
 #include "text/input_error.h"
+#include "meshes/assimp_messages.h"
 #include "meshes/mesh_file_headers.h"
 #include "meshes/obj_lines.h"
 #include "meshes/ply_lists.h"
@@ -107,81 +105,6 @@ Format format_of(const std::string& path) {
     throw InputError(path, "unknown mesh format '" + ext + "' (supported: .obj, .ply, .stl, .off)");
 }
 
-// ---- assimp's log -----------------------------------------------------------
-
-// The messages of the load running on this thread, or null.
-thread_local std::vector<std::string>* t_messages = nullptr;
-
-// Prints nothing; keeps warnings and errors for the load on this thread.
-class CollectingLogger final : public Assimp::Logger {
-public:
-    CollectingLogger() : Assimp::Logger(Assimp::Logger::NORMAL) {}
-    bool attachStream(Assimp::LogStream*, unsigned int) override { return false; }
-    bool detachStream(Assimp::LogStream*, unsigned int) override { return false; }
-
-private:
-    void OnDebug(const char*) override {}
-    void OnVerboseDebug(const char*) override {}
-    void OnInfo(const char*) override {}
-    void OnWarn(const char* message) override { keep(message); }
-    void OnError(const char* message) override { keep(message); }
-    static void keep(const char* message) noexcept {
-        if (t_messages == nullptr) return;
-        try {
-            t_messages->emplace_back(message);
-        } catch (...) {
-            // Out of memory: the load fails on its own.
-        }
-    }
-};
-
-// Collects assimp's messages while it lives. The logger is assimp's global
-// one, set once and kept (assimp owns it); loads on other threads have their
-// own lists.
-class MessageCollector {
-public:
-    MessageCollector() {
-        static std::once_flag installed;
-        std::call_once(installed, [] { Assimp::DefaultLogger::set(new CollectingLogger); });
-        t_messages = &messages_;
-    }
-    ~MessageCollector() { t_messages = nullptr; }
-    MessageCollector(const MessageCollector&) = delete;
-    MessageCollector& operator=(const MessageCollector&) = delete;
-    const std::vector<std::string>& messages() const { return messages_; }
-
-private:
-    std::vector<std::string> messages_;
-};
-
-// assimp 5.2.5's messages, while reading these four formats, that leave the
-// geometry as the file has it: materials (ours come from the scene file),
-// the validator's warnings (unreferenced vertices, texture coordinates), an
-// OBJ `f` line with no vertices (skipped), a polygon that is not simple
-// (triangulated as a fan instead), texture coordinates declared 3-D that are
-// 2-D (we read none: assimp-testmodels' OBJ/regr01.obj), an STL solid with
-// no facets beside others (a file of none still fails: "no triangles").
-// Any other message fails the load.
-bool harmless(const std::string& m) {
-    static const char* const prefixes[] = {
-        "Validation warning:",
-        "OBJ: failed to locate material",
-        "OBJ: no name for material library specified",
-        "OBJ: Unable to locate material file",
-        "OBJ: Unable to locate fallback material file",
-        "OBJ: Unsupported material requested",
-        "OBJ: unexpected illumination model",
-        "OBJ/MTL:",
-        "OBJ: No object detected to attach a new mesh instance",
-        "Obj: Ignoring empty face",
-        "Failed to triangulate polygon (no ear found)",
-        "STL: mesh is empty or invalid; no data loaded",  // an empty solid beside others
-    };
-    // (assimp puts its own prefix before this one.)
-    if (contains(m, "UVs are declared to be 3D but they're obviously not")) return true;
-    return std::any_of(std::begin(prefixes), std::end(prefixes), [&](const char* p) { return starts_with(m, p); });
-}
-
 // ---- messages ----------------------------------------------------------------
 
 std::string number(float v) {
@@ -193,7 +116,7 @@ std::string number(float v) {
 std::string triple(const aiVector3D& v) { return "(" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ")"; }
 
 [[noreturn]] void fail(const std::string& path, Format format, const std::string& assimp_message, bool binary_ply) {
-    detail::MeshMessage m = detail::clean_assimp_message(assimp_message, path);
+    MeshMessage m = clean_assimp_message(assimp_message, path);
     if (binary_ply && contains(m.text, "out of range")) m.text += " (truncated or corrupt binary data?)";
     if (m.line == 0 && contains(m.text, "vertex index out of range")) {
         const TextPosition at = bad_face_index_position(path, format);
@@ -203,10 +126,10 @@ std::string triple(const aiVector3D& v) { return "(" + number(v.x) + ", " + numb
 }
 
 // A failed read, or one assimp logged a problem with: InputError.
-void check_result(const std::string& path, Format format, const MessageCollector& log, const aiScene* scene,
+void check_result(const std::string& path, Format format, const AssimpMessages& log, const aiScene* scene,
                   const Assimp::Importer& importer, bool binary_ply) {
     for (const std::string& m : log.messages())
-        if (!harmless(m)) fail(path, format, m, binary_ply);
+        if (!harmless_assimp_message(m)) fail(path, format, m, binary_ply);
     if (scene == nullptr) fail(path, format, importer.GetErrorString(), binary_ply);
 }
 
@@ -400,94 +323,6 @@ MeshData collect(const std::string& path, const aiScene& scene, bool all_normals
 
 }  // namespace
 
-namespace detail {
-
-MeshMessage clean_assimp_message(const std::string& message, const std::string& path) {
-    // One line, single spaces.
-    std::string s;
-    for (char c : message) {
-        const bool space = static_cast<unsigned char>(c) < 0x20 || c == ' ' || c == 0x7f;
-        if (!space)
-            s += c;
-        else if (!s.empty() && s.back() != ' ')
-            s += ' ';
-    }
-    while (!s.empty() && s.back() == ' ') s.pop_back();
-    // The error names the file already.
-    if (!path.empty()) {
-        for (const std::string& p : {" for " + path, " \"" + path + "\"", " " + path}) {
-            for (std::size_t at = s.find(p); at != std::string::npos; at = s.find(p)) s.erase(at, p.size());
-        }
-    }
-    static const char* const prefixes[] = {"Validation failed: ", "std::exception: ", "Invalid .ply file: ",
-                                           "OBJ: ", "Obj: ", "OFF: ", "STL: ", "PLY: "};
-    for (bool stripped = true; stripped;) {
-        stripped = false;
-        for (const char* p : prefixes) {
-            if (starts_with(s, p)) {
-                s.erase(0, std::strlen(p));
-                stripped = true;
-            }
-        }
-    }
-    while (!s.empty() && (s.back() == '.' || s.back() == ' ')) s.pop_back();
-
-    // What the messages mean, said in our words where assimp's mislead.
-    if (starts_with(s, "aiMesh::mFaces[")) {
-        const std::size_t close = s.find(']');
-        const std::string face = s.substr(15, close == std::string::npos ? 0 : close - 15);
-        if (contains(s, "is out of range"))
-            s = "face " + face + " has a vertex index out of range";
-        else if (contains(s, "is a POINT"))  // an OBJ `f` line of one vertex
-            s = "face " + face + " has only one vertex";
-        else if (contains(s, "is a LINE"))
-            s = "face " + face + " has only two vertices";
-        else if (contains(s, "mIndices is nullptr") || contains(s, "mNumIndices is 0"))
-            s = "face " + face + " has no vertices";
-    } else if (s == "vertex index out of range" || s == "Vertex index is out of range") {
-        s = "a face has a vertex index out of range";
-    } else if (s == "The number of verts in the header is incorrect") {
-        s = "fewer vertices than the header declares (a truncated file?)";
-    } else if (s == "The number of faces in the header is incorrect") {
-        s = "fewer faces than the header declares (a truncated file?)";
-    } else if (s == "Faces with zero indices aren't allowed") {
-        s = "a face with no vertices, or with more than 9 (the most assimp's OFF reader takes)";
-    } else if (s == "unexpected EOF. 'endsolid' keyword was expected") {
-        s = "the file ends before 'endsolid' (a truncated file?)";
-    } else if (starts_with(s, "Unable to parse property instance") ||
-               starts_with(s, "Unable to parse binary property instance")) {
-        s = "a value in the data cannot be read (a truncated or corrupt file?)";
-    } else if (starts_with(s, "Failed to determine STL storage representation")) {
-        s += ": neither ASCII STL (starting 'solid') nor binary STL of 84 + 50 bytes per triangle (a truncated file?)";
-    } else if (contains(s, "contains no faces") || contains(s, "contains no vertices") ||
-               contains(s, "mNumMeshes is 0") || contains(s, "There are no valid") ||
-               contains(s, "There are no facets defined") || s == "no vertices") {
-        s = "no triangles";
-    }
-    if (s.empty()) s = "assimp cannot read the file (no reason given)";
-    // "Failed to ..." but not "OBJ-file ...".
-    if (s.size() > 1 && std::isupper(static_cast<unsigned char>(s[0])) &&
-        std::islower(static_cast<unsigned char>(s[1])))
-        s[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(s[0])));
-
-    MeshMessage out;
-    out.text = s;
-    // "line N", as a word.
-    for (std::size_t at = s.find("line "); at != std::string::npos; at = s.find("line ", at + 1)) {
-        if (at > 0 && std::isalnum(static_cast<unsigned char>(s[at - 1]))) continue;
-        int line = 0;
-        const char* begin = s.data() + at + 5;
-        const auto [ptr, ec] = std::from_chars(begin, s.data() + s.size(), line);
-        if (ec == std::errc() && ptr != begin && line > 0) {
-            out.line = line;
-            break;
-        }
-    }
-    return out;
-}
-
-}  // namespace detail
-
 MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
     const std::uintmax_t size = check_file(path);
     const Format format = format_of(path);
@@ -499,7 +334,7 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
     if (format == Format::off) check_off_header(path, size);
     if (format == Format::obj) check_obj_lines(path);
     try {
-        MessageCollector log;
+        AssimpMessages log;
         Assimp::Importer importer;
         // Read and validated only, so coordinates are checked before
         // JoinIdenticalVertices can merge a NaN away. STL is not validated:

@@ -50,18 +50,4 @@ inline constexpr std::size_t kMaxMeshTriangles = 5'000'000;
 // no triangles, more than `max_triangles` of them: InputError.
 MeshData load_mesh(const std::string& path, std::size_t max_triangles = kMaxMeshTriangles);
 
-namespace detail {
-
-// One of assimp's error or warning texts as an InputError's message: one
-// line, without assimp's prefixes ("Validation failed: ", "OBJ: ", ...) or
-// the file's path (the error names the file), and where the text says
-// "line N", that line. Exposed for the tests.
-struct MeshMessage {
-    int line = 0;  // 0: not known
-    std::string text;
-};
-MeshMessage clean_assimp_message(const std::string& message, const std::string& path);
-
-}  // namespace detail
-
 }  // namespace fh

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "text/input_error.h"
+#include "meshes/assimp_messages.h"
 #include "meshes/mesh_loader.h"
 #include "test_util.h"
 
@@ -646,7 +647,6 @@ TEST(MeshLoaderErrors, NoTriangles) {
 }
 
 TEST(MeshLoaderErrors, AssimpMessagesCleaned) {
-    using detail::clean_assimp_message;
     const std::string path = "/meshes/a b.stl";
     auto text = [&](const std::string& m) { return clean_assimp_message(m, path).text; };
     EXPECT_EQ(text("Validation failed: aiMesh::mFaces[3]::mIndices[1] is out of range"),
@@ -658,7 +658,7 @@ TEST(MeshLoaderErrors, AssimpMessagesCleaned) {
     EXPECT_EQ(text("STL: two\nlines\r\n  and\tspaces "), "two lines and spaces");
     EXPECT_EQ(text(""), "assimp cannot read the file (no reason given)");
     // A line number, where assimp gives one, becomes the error's line.
-    const detail::MeshMessage m = clean_assimp_message("OBJ: bad token at line 12 (after 'f')", path);
+    const MeshMessage m = clean_assimp_message("OBJ: bad token at line 12 (after 'f')", path);
     EXPECT_EQ(m.line, 12);
     EXPECT_EQ(m.text, "bad token at line 12 (after 'f')");
     EXPECT_EQ(clean_assimp_message("an outline 5 away", path).line, 0);
