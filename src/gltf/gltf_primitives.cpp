@@ -102,6 +102,30 @@ public:
         return uvs;
     }
 
+    // COLOR_0, linear: a VEC3 or VEC4 (its alpha not drawn) of floats or
+    // normalized unsigned bytes or shorts, each channel clamped to [0, 1].
+    // Empty when the primitive has none.
+    std::vector<dvec3> read_colors(const tinygltf::Primitive& prim, const std::string& what) const {
+        const auto attribute = prim.attributes.find("COLOR_0");
+        if (attribute == prim.attributes.end()) return {};
+        const int index = attribute->second;
+        if (index < 0 || size_t(index) >= m_.accessors.size()) fail(what + ": COLOR_0's accessor does not exist");
+        const tinygltf::Accessor& a = m_.accessors[size_t(index)];
+        if (a.type != TINYGLTF_TYPE_VEC3 && a.type != TINYGLTF_TYPE_VEC4) fail(what + ": COLOR_0 is not a VEC3 or VEC4");
+        const bool normalized_int = a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                                     a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+        if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !normalized_int)
+            fail(what + ": COLOR_0 is not floats or normalized unsigned bytes or shorts");
+        const int components = a.type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+        const std::vector<double> c = read_.numbers(index, components, what + " COLOR_0");
+        std::vector<dvec3> colors(c.size() / size_t(components));
+        for (size_t i = 0; i < colors.size(); ++i) {
+            const double* x = &c[size_t(components) * i];
+            colors[i] = glm::clamp(dvec3(x[0], x[1], x[2]), 0.0, 1.0);
+        }
+        return colors;
+    }
+
     Mesh read_primitive(const tinygltf::Primitive& prim, const std::string& what) const {
         const auto position = prim.attributes.find("POSITION");
         if (position == prim.attributes.end()) fail(what + ": no POSITION attribute");
@@ -158,6 +182,7 @@ Mesh read_gltf_primitive(const tinygltf::Model& model, const AccessorReader& rea
     const PrimitiveReader reader(model, read);
     Mesh mesh = reader.read_primitive(prim, what);
     mesh.uvs = reader.read_uvs(prim, what);
+    mesh.colors = reader.read_colors(prim, what);
     return mesh;
 }
 

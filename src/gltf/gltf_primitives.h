@@ -1,7 +1,8 @@
 // A glTF mesh primitive as a firsthit mesh: TRIANGLES, strips and fans
 // numbered as the specification numbers them, indexed or not, with their
-// normals and the texture coordinates their base colour texture reads
-// (moved by KHR_texture_transform). Problems are InputError naming the file.
+// normals, the texture coordinates their base colour texture reads (moved
+// by KHR_texture_transform) and their vertex colours (COLOR_0). Problems
+// are InputError naming the file.
 #pragma once
 
 #include <string>

@@ -44,8 +44,9 @@ FH_HOT_INLINE LaneInts<T> solid_at(const FlatGeometry<T>& mesh, const Cutout& cu
         int first = 0;
         while (!active[first]) ++first;
         const LaneInts<T> same = active & (prim == prim[first]);
-        Lanes<T> u, v;
-        mesh.uv_at(int(prim[first]), p, u, v);
+        Lanes<T> b1, b2, u, v;
+        mesh.weights_at(int(prim[first]), p, b1, b2);
+        mesh.uv_at(int(prim[first]), b1, b2, u, v);
         solid |= cut.solid<T>(u, v, same);
         active &= ~same;
     }

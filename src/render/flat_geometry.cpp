@@ -75,6 +75,8 @@ void flatten(const Scene& scene, FlatGeometry<T>& g) {
     g.uvs.clear();
     for (const auto& c : scene.triangle_uvs)
         g.uvs.push_back({T(c[0].x), T(c[0].y), T(c[1].x), T(c[1].y), T(c[2].x), T(c[2].y)});
+    g.colors.clear();
+    for (const auto& c : scene.triangle_colors) g.colors.push_back({Color<T>(c[0]), Color<T>(c[1]), Color<T>(c[2])});
     g.triangles.reserve(g.triangle_source.size());
     for (const std::int32_t i : g.triangle_source) {
         const Triangle<double>& t = scene.triangles[size_t(i)];

@@ -98,6 +98,12 @@ struct TriangleUvs {
     T u0, v0, u1, v1, u2, v2;
 };
 
+// A triangle's vertex colours (each channel in [0, 1]) at v0, v1 and v2.
+template <typename T>
+struct TriangleColors {
+    Color<T> c0, c1, c2;
+};
+
 // The normal turned to face the ray (report 8.4).
 template <typename T>
 FH_HOT_INLINE Vec3Lanes<T> facing(const Vec3Lanes<T>& normal, const Vec3Lanes<T>& direction) {
@@ -150,6 +156,8 @@ struct FlatGeometry {
     // An instance's textured mesh: each triangle's texture coordinates, by
     // its index in the Scene (triangle_source's values); else empty.
     BigArray<TriangleUvs<T>> uvs;
+    // An instance's mesh with vertex colours: each triangle's, the same way.
+    BigArray<TriangleColors<T>> colors;
     static constexpr bool kPackedRows = std::is_same_v<T, float>;
 
     // pool: the BVH is built on it (nullptr: on the calling thread).
@@ -186,17 +194,27 @@ struct FlatGeometry {
         shading = s.smooth < 0 ? normal : smooth_triangles[size_t(s.smooth)].normal_at(point);
     }
 
-    // Texture coordinates (u, v) at points p of triangle `prim` (uvs not empty).
-    FH_HOT_INLINE void uv_at(int prim, const Vec3Lanes<T>& p, Lanes<T>& u, Lanes<T>& v) const {
-        const size_t k = size_t(ids.triangle_index(prim));
-        const Triangle<T>& t = triangles[k];
-        const TriangleUvs<T>& c = uvs[size_t(triangle_source[k])];
+    // The weights b1, b2 of v1 and v2 at points p of triangle `prim`
+    // (clamped to the triangle), for what its vertices carry.
+    FH_HOT_INLINE void weights_at(int prim, const Vec3Lanes<T>& p, Lanes<T>& b1, Lanes<T>& b2) const {
+        const Triangle<T>& t = triangles[size_t(ids.triangle_index(prim))];
         const Vec3<T> e1 = t.v1 - t.v0, e2 = t.v2 - t.v0;
         const T d00 = glm::dot(e1, e1), d01 = glm::dot(e1, e2), d11 = glm::dot(e2, e2);
-        Lanes<T> b1, b2;
         clamped_weights(p - Vec3Lanes<T>::splat(t.v0), e1, e2, d00, d01, d11, T(1) / (d00 * d11 - d01 * d01), b1, b2);
+    }
+
+    // Texture coordinates (u, v) of triangle `prim` at weights b1, b2 (uvs not empty).
+    FH_HOT_INLINE void uv_at(int prim, const Lanes<T>& b1, const Lanes<T>& b2, Lanes<T>& u, Lanes<T>& v) const {
+        const TriangleUvs<T>& c = uvs[size_t(triangle_source[size_t(ids.triangle_index(prim))])];
         u = c.u0 + b1 * (c.u1 - c.u0) + b2 * (c.u2 - c.u0);
         v = c.v0 + b1 * (c.v1 - c.v0) + b2 * (c.v2 - c.v0);
+    }
+
+    // The vertex colour of triangle `prim` at weights b1, b2 (colors not empty).
+    FH_HOT_INLINE ColorLanes<T> color_at(int prim, const Lanes<T>& b1, const Lanes<T>& b2) const {
+        const TriangleColors<T>& c = colors[size_t(triangle_source[size_t(ids.triangle_index(prim))])];
+        auto channel = [&](T x0, T x1, T x2) FH_HOT_LAMBDA { return x0 + b1 * (x1 - x0) + b2 * (x2 - x0); };
+        return {channel(c.c0.x, c.c1.x, c.c2.x), channel(c.c0.y, c.c1.y, c.c2.y), channel(c.c0.z, c.c1.z, c.c2.z)};
     }
 
     // Point, normals facing the ray, and material of one hit (tests): the

@@ -46,9 +46,14 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
             ambient[m] += intensity(a) * mat.ambient * a.color * mat.ambient_color;
         }
     }
+    // Materials on meshes with vertex colours are shaded as textured ones:
+    // the colours multiply ambient and diffuse, not emissive.
+    std::vector<bool> coloured(scene.materials.size(), false);
+    for (const Instance& i : scene.instances)
+        if (!scene.meshes[size_t(i.mesh)].mesh->colors.empty()) coloured[size_t(i.material)] = true;
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const Material<double>& mat = scene.materials[m];
-        const bool textured = mat.texture >= 0 && (fx.ambient || fx.diffuse);
+        const bool textured = (mat.texture >= 0 || coloured[m]) && (fx.ambient || fx.diffuse);
         // (Added only when there is some: bytes as before for the report's.)
         if (mat.emissive != dvec3(0) && !textured) ambient[m] += mat.emissive;
         const int whole = whole_exponent(mat.phong_exponent);

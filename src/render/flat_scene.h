@@ -23,7 +23,8 @@ struct MaterialShading {
     bool whole_exponent = true;  // the exponent is whole and at most kWholePowerLimit
     // A textured material (FlatScene::textures; -1: none): its texel colour
     // multiplies `ambient` and the diffuse terms, and its emissive colour,
-    // kept apart here (in `ambient` otherwise), is added after.
+    // kept apart here (in `ambient` otherwise), is added after. So too the
+    // vertex colours of a mesh that has them (with or without a texture).
     int texture = -1;
     Color<T> emissive{0};
 };

@@ -230,24 +230,38 @@ private:
     }
 
     // A textured material's texel colours at an instance's points (in its
-    // mesh's space) into s.albedo, and its ambient term times them (plus
-    // its emissive colour) into ambient; untextured: albedo 1. One texel
-    // sample per hit, no allocation.
+    // mesh's space), times the mesh's vertex colours where it has them,
+    // into s.albedo, and its ambient term times them (plus its emissive
+    // colour) into ambient; neither: albedo 1. One texel sample per hit, no
+    // allocation.
     template <typename First>
     FH_HOT_INLINE void textured(const FlatGeometry<T>& mesh, int prim, const Vec3Lanes<T>& point, int material,
                                 const LaneInts<T>& lanes, First first, SurfaceLanes& s, ColorLanes<T>& ambient) const {
         const MaterialShading<T>& m = scene_.shading[size_t(material)];
         const Lanes<T> one = splat(T(1));
         ColorLanes<T> albedo{one, one, one};
-        if (m.texture < 0 || mesh.uvs.empty()) {
+        const bool texel = m.texture >= 0 && !mesh.uvs.empty();
+        if (!texel && mesh.colors.empty()) {
             put(s.albedo, albedo, lanes, first);
+            // A material kept apart (textured, or coloured on another mesh)
+            // still shines on a mesh that has neither.
+            if (m.emissive != Color<T>(0))
+                put(ambient, ColorLanes<T>{splat(m.ambient.x), splat(m.ambient.y), splat(m.ambient.z)} + m.emissive,
+                    lanes, first);
             return;
         }
-        const Texture& texture = scene_.textures[size_t(m.texture)];
-        Lanes<T> u, v;
-        mesh.uv_at(prim, point, u, v);
-        const TexelLanes<T> c = texture.sample<T>(u, v);
-        albedo = {c.r, c.g, c.b};
+        Lanes<T> b1, b2;
+        mesh.weights_at(prim, point, b1, b2);
+        if (texel) {
+            Lanes<T> u, v;
+            mesh.uv_at(prim, b1, b2, u, v);
+            const TexelLanes<T> c = scene_.textures[size_t(m.texture)].template sample<T>(u, v);
+            albedo = {c.r, c.g, c.b};
+        }
+        if (!mesh.colors.empty()) {
+            const ColorLanes<T> c = mesh.color_at(prim, b1, b2);
+            albedo = {albedo.x * c.x, albedo.y * c.y, albedo.z * c.z};
+        }
         put(s.albedo, albedo, lanes, first);
         put(ambient, ColorLanes<T>{albedo.x * m.ambient.x, albedo.y * m.ambient.y, albedo.z * m.ambient.z} + m.emissive,
             lanes, first);

@@ -38,6 +38,9 @@ struct Mesh {
     // One texture coordinate (u, v) per position (a glTF TEXCOORD set, its
     // material's KHR_texture_transform applied), or empty.
     std::vector<dvec2> uvs;
+    // One colour per position (a glTF COLOR_0, linear, each channel in
+    // [0, 1]) multiplying the material's diffuse and ambient colours, or empty.
+    std::vector<dvec3> colors;
 };
 
 struct PlacedMesh {

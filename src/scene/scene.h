@@ -58,6 +58,8 @@ struct Scene {
     // Empty, or one per triangle: its vertices' texture coordinates (an
     // instance's mesh, render/instance_set.cpp).
     std::vector<std::array<dvec2, 3>> triangle_uvs;
+    // Empty, or one per triangle: its vertices' colours (the same).
+    std::vector<std::array<dvec3, 3>> triangle_colors;
     std::vector<AmbientLight<double>> ambient_lights;  // at most one
     std::vector<DirectionalLight<double>> directional_lights;
     std::vector<SpotLight<double>> spot_lights;

@@ -112,6 +112,13 @@ struct Quad {
     std::vector<float> uv1;          // TEXCOORD_1 (8 numbers), or none
     bool degenerate_first = false;   // a zero-area triangle before its two
     int layers = 1;                  // copies of it in the same primitive, each 0.01 higher
+    // COLOR_0, component by component for its 4 vertices (one layer), or none:
+    // `color_kind` VEC3 or VEC4 of `color_type` (normalized when an integer,
+    // unless `color_normalized` is false).
+    std::vector<double> colors;
+    std::string color_kind = "VEC3";
+    int color_type = kFloat;
+    bool color_normalized = true;
 };
 
 // The members (no braces) holding each quad as a mesh on a node of its
@@ -144,6 +151,15 @@ std::string quads_body(Bin& bin, const std::vector<Quad>& quads, const std::stri
         if (!q.uv1.empty()) {
             accessors += ", " + accessor(bin.f32(q.uv1), kFloat, 4, "VEC2");
             attributes += ", \"TEXCOORD_1\": " + std::to_string(a++);
+        }
+        if (!q.colors.empty()) {
+            std::vector<float> f;
+            std::vector<int> i;
+            for (const double c : q.colors) f.push_back(float(c)), i.push_back(int(c));
+            const int view = q.color_type == kFloat ? bin.f32(f) : q.color_type == kUnsignedByte ? bin.u8(i) : bin.u16(i);
+            const bool normalized = q.color_type != kFloat && q.color_normalized;
+            accessors += ", " + accessor(view, q.color_type, 4, q.color_kind, normalized ? ", \"normalized\": true" : "");
+            attributes += ", \"COLOR_0\": " + std::to_string(a++);
         }
         accessors += ", " + accessor(bin.u16(index), kUnsignedShort, index.size(), "SCALAR");
         const int indices = a++;
@@ -959,6 +975,102 @@ TEST(GltfTextureBadImages, ABaseColourTextureNeedsItsTexcoordSet) {
             "mesh 0 primitive 0: its material reads TEXCOORD_0, which it does not have");
     // Without the texture the same quad loads.
     EXPECT_NO_THROW(load(quads_file({q}, surfaces({material("[1, 1, 1, 1]")}))));
+}
+
+// ============================================================ vertex colours
+
+TEST(GltfVertexColors, ReadAsLinearColoursClampedToOne) {
+    // Floats, VEC3: as written, clamped to [0, 1].
+    Quad q{-1, 1, -1, 1, 0, 0};
+    q.colors = {1, 0, 0, 0.5, 0.25, 0, 0, 0, 1, 2, -1, 0.75};
+    GltfFile f = load(quads_file({q}, surfaces({material("[1, 1, 1, 1]")})));
+    ASSERT_EQ(f.scene.meshes.size(), 1u);
+    const std::vector<dvec3>& c = f.scene.meshes[0].mesh->colors;
+    ASSERT_EQ(c.size(), 4u);
+    expect_vec(c[0], {1, 0, 0});
+    expect_vec(c[1], {0.5, 0.25, 0});
+    expect_vec(c[2], {0, 0, 1});
+    expect_vec(c[3], {1, 0, 0.75});
+    // Normalized unsigned bytes, VEC4 (the alpha is not drawn): c / 255.
+    q.colors = {255, 0, 51, 7, 0, 255, 0, 255, 102, 102, 102, 0, 1, 2, 3, 4};
+    q.color_kind = "VEC4";
+    q.color_type = kUnsignedByte;
+    f = load(quads_file({q}, surfaces({material("[1, 1, 1, 1]")})));
+    const std::vector<dvec3>& b = f.scene.meshes[0].mesh->colors;
+    ASSERT_EQ(b.size(), 4u);
+    expect_vec(b[0], {1, 0, 0.2});
+    expect_vec(b[2], {0.4, 0.4, 0.4});
+    expect_vec(b[3], {1 / 255.0, 2 / 255.0, 3 / 255.0});
+    // Normalized unsigned shorts: c / 65535.
+    q.color_type = kUnsignedShort;
+    q.colors = {65535, 0, 0, 0, 0, 65535, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    f = load(quads_file({q}, surfaces({material("[1, 1, 1, 1]")})));
+    expect_vec(f.scene.meshes[0].mesh->colors[0], {1, 0, 0});
+    expect_vec(f.scene.meshes[0].mesh->colors[1], {0, 65535 / 65535.0, 0});
+}
+
+TEST(GltfVertexColors, WhatTheSpecificationForbidsIsRefused) {
+    Quad q{-1, 1, -1, 1, 0, 0};
+    q.colors = {1, 1, 1, 1};
+    q.color_kind = "SCALAR";
+    refused(quads_file({q}, surfaces({material("[1, 1, 1, 1]")})), "mesh 0 primitive 0: COLOR_0 is not a VEC3 or VEC4");
+    q.colors = std::vector<double>(16, 255);
+    q.color_kind = "VEC4";
+    q.color_type = kUnsignedByte;
+    q.color_normalized = false;
+    refused(quads_file({q}, surfaces({material("[1, 1, 1, 1]")})),
+            "mesh 0 primitive 0: COLOR_0 is not floats or normalized unsigned bytes or shorts");
+}
+
+TEST(GltfVertexColors, TheyMultiplyTheBaseColourAndTheTexture) {
+    // Ambient light only (a pixel is 255 baseColor COLOR_0, lit()'s
+    // ambient 1 being the whole colour): red at the quad's top edge (y = 1:
+    // its vertices 0 and 1), blue at its bottom (y = -1), so between them
+    // COLOR_0 = ((1 + y) / 2, 0, (1 - y) / 2), linear in y in both of the
+    // quad's triangles. Row j sees y = 1 - (j + 1/2) / 4: row 0 y = 0.875,
+    // (0.9375, 0, 0.0625) 255 = (239.06, 0, 15.94); row 3 y = 0.125,
+    // (0.5625, 0, 0.4375) 255 = (143.44, 0, 111.56); row 7 y = -0.875,
+    // (15.94, 0, 239.06).
+    Quad q{-1, 1, -1, 1, 0, 0};
+    q.colors = {1, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 1};
+    const Lighting ambient_only{1.0, 0.0};
+    for (const Precision p : kPrecisions) {
+        const Image plain = top_view(lit(quads_file({q}, surfaces({material("[1, 1, 1, 1]")})), ambient_only), p);
+        for (int i = 0; i < 8; ++i) {
+            expect_pixel(plain, i, 0, {239, 0, 16}, "row 0");
+            expect_pixel(plain, i, 3, {143, 0, 112}, "row 3");
+            expect_pixel(plain, i, 7, {16, 0, 239}, "row 7");
+        }
+        // A base colour factor of (0.5, 1, 1) halves the red.
+        const Image half = top_view(lit(quads_file({q}, surfaces({material("[0.5, 1, 1, 1]")})), ambient_only), p);
+        expect_pixel(half, 4, 3, {72, 0, 112}, "half red, row 3");
+        // A texture too (nearest texels): white on the left, (0, 0, 255) on
+        // the right, so the left half shows the colours and the right only
+        // their blue.
+        const std::string textured =
+            quads_file({q}, surfaces({material("[1, 1, 1, 1]", tex(0))}, {{0, 0}},
+                                     {image_json(rgba_png(2, 1, {{255, 255, 255, 255}, {0, 0, 255, 255}}))},
+                                     {sampler_json(kRepeat, kRepeat, kNearest)}));
+        const Image both = top_view(lit(textured, ambient_only), p);
+        expect_pixel(both, 1, 3, {143, 0, 112}, "white texel, row 3");
+        expect_pixel(both, 6, 3, {0, 0, 112}, "blue texel, row 3");
+    }
+}
+
+TEST(GltfVertexColors, EmissiveIsNotMultiplied) {
+    // Base colour 0.2, emissive (0, 0.2, 0) = (0, 51, 0), ambient light only
+    // (1): a quad with all-red vertex colours is 255 (0.2, 0, 0) + (0, 51, 0)
+    // = (51, 51, 0); the same material on a quad without COLOR_0 (0.2, 0.2,
+    // 0.2) 255 + (0, 51, 0) = (51, 102, 51).
+    Quad red{-1, 0, -1, 1, 0, 0}, plain{0, 1, -1, 1, 0, 0};
+    red.colors = {1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0};
+    const std::string json =
+        quads_file({red, plain}, surfaces({material("[0.2, 0.2, 0.2, 1]", "", ", \"emissiveFactor\": [0, 0.2, 0]")}));
+    for (const Precision p : kPrecisions) {
+        const Image im = top_view(lit(json, {1.0, 0.0}), p);
+        expect_pixel(im, 1, 4, {51, 51, 0}, "coloured quad");
+        expect_pixel(im, 6, 4, {51, 102, 51}, "quad without colours");
+    }
 }
 
 }  // namespace
