@@ -49,9 +49,14 @@ void print_scene(const Scene& s, const RenderSettings& settings) {
 }
 
 
-// The lines a movie and a glTF file share; with --frame, that frame and
-// its time.
-void print_movie(const std::string& kind, const Movie& m, const JobRequest& request) {
+// The frame --frame picks in m (checked), or -1 without it.
+int chosen_frame(const Movie& m, const JobRequest& request) {
+    return request.frame ? parse_int(*request.frame, "--frame", 0, m.frame_count() - 1) : -1;
+}
+
+// The lines a movie and a glTF file share; with a frame (>= 0), it and its
+// time.
+void print_movie(const std::string& kind, const Movie& m, int frame) {
     std::cout << "kind: " << kind << "\n"
               << "frames: " << m.frame_count() << "\n"
               << "fps: " << m.fps << "\n"
@@ -60,8 +65,7 @@ void print_movie(const std::string& kind, const Movie& m, const JobRequest& requ
               << "width: " << m.camera.width << "\n"
               << "height: " << m.camera.height << "\n"
               << "first_frame_file: " << FrameFiles{}.name(0, m.frame_count()) << "\n";
-    if (request.frame) {
-        const int frame = parse_int(*request.frame, "--frame", 0, m.frame_count() - 1);
+    if (frame >= 0) {
         std::cout << "frame: " << frame << "\n"
                   << "time: " << frame / m.fps << "\n";
     }
@@ -72,12 +76,13 @@ int run_info(const Args& args) {
     JobRequest request = job_request_from_args(args);
     const std::string& file = request.file;
     if (is_gltf_file(file)) {
-        GltfScene g = gltf_scene(file);
+        const double exposure = request.exposure.value_or(1);
+        GltfScene g = gltf_scene(file, exposure);
         std::vector<std::string> animations;
         for (const NodeAnimation& a : g.animations) animations.push_back(a.name);
         const Movie m = gltf_movie(std::move(g), {file, request.camera, request.animation, request.fps.value_or(30),
-                                                  request.exposure.value_or(1)});
-        print_movie("gltf", m, request);
+                                                  exposure});
+        print_movie("gltf", m, chosen_frame(m, request));  // checked before anything is printed
         std::cout << "nodes: " << m.scene.nodes.size() << "\n"
                   << "animations:";
         for (const std::string& a : animations) std::cout << " '" << a << "'";
@@ -95,7 +100,7 @@ int run_info(const Args& args) {
     request.movie_camera_note = "info shows the camera it films with";
     const Job job = load_job(request);  // before printing: an error prints nothing else
     if (job.is_movie_file) {
-        print_movie("movie", job.movie, request);
+        print_movie("movie", job.movie, job.frame >= 0 && request.frame ? job.frame : -1);
     } else {
         std::cout << "kind: scene\n";
         if (request.camera)

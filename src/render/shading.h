@@ -148,8 +148,9 @@ private:
         for_each_distinct(h.prim, hit, [&](int prim, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
             Vec3Lanes<T> point, normal, shading;
             geometry_.project(prim, p, point, normal, shading);
-            put_hit(point, normal, shading, geometry_.surfaces[size_t(prim)].material, lanes, first, s, geometric,
-                    ambient);
+            const int material = geometry_.surfaces[size_t(prim)].material;
+            put_hit(point, normal, shading, material, lanes, first, s, geometric, ambient);
+            if (scene_.textured) untextured(material, lanes, first, s, ambient);
         });
         finish_surfaces(ray, hit, geometric, ambient, s, local);
     }
@@ -210,9 +211,9 @@ private:
             Vec3Lanes<T> point, normal, shading;
             if (in < 0) {
                 geometry_.project(prim, p, point, normal, shading);
-                put_hit(point, normal, shading, geometry_.surfaces[size_t(prim)].material, lanes, first, s, geometric,
-                        ambient);
-                if (scene_.textured) put(s.albedo, ColorLanes<T>::splat(Color<T>(1)), lanes, first);
+                const int material = geometry_.surfaces[size_t(prim)].material;
+                put_hit(point, normal, shading, material, lanes, first, s, geometric, ambient);
+                if (scene_.textured) untextured(material, lanes, first, s, ambient);
                 return;
             }
             const FlatInstance<T>& inst = instances_->instances[size_t(in)];
@@ -238,18 +239,13 @@ private:
     FH_HOT_INLINE void textured(const FlatGeometry<T>& mesh, int prim, const Vec3Lanes<T>& point, int material,
                                 const LaneInts<T>& lanes, First first, SurfaceLanes& s, ColorLanes<T>& ambient) const {
         const MaterialShading<T>& m = scene_.shading[size_t(material)];
-        const Lanes<T> one = splat(T(1));
-        ColorLanes<T> albedo{one, one, one};
         const bool texel = m.texture >= 0 && !mesh.uvs.empty();
         if (!texel && mesh.colors.empty()) {
-            put(s.albedo, albedo, lanes, first);
-            // A material kept apart (textured, or coloured on another mesh)
-            // still shines on a mesh that has neither.
-            if (m.emissive != Color<T>(0))
-                put(ambient, ColorLanes<T>{splat(m.ambient.x), splat(m.ambient.y), splat(m.ambient.z)} + m.emissive,
-                    lanes, first);
+            untextured(material, lanes, first, s, ambient);
             return;
         }
+        const Lanes<T> one = splat(T(1));
+        ColorLanes<T> albedo{one, one, one};
         Lanes<T> b1, b2;
         mesh.weights_at(prim, point, b1, b2);
         if (texel) {
@@ -265,6 +261,18 @@ private:
         put(s.albedo, albedo, lanes, first);
         put(ambient, ColorLanes<T>{albedo.x * m.ambient.x, albedo.y * m.ambient.y, albedo.z * m.ambient.z} + m.emissive,
             lanes, first);
+    }
+
+    // In a textured scene, a surface with neither texels nor vertex colours
+    // (any of the world's, or an instance's mesh without them): albedo 1,
+    // and a material whose emissive colour is kept apart (textured, or on
+    // coloured meshes elsewhere) still shines.
+    template <typename First>
+    FH_HOT_INLINE void untextured(int material, const LaneInts<T>& lanes, First first, SurfaceLanes& s,
+                                  ColorLanes<T>& ambient) const {
+        const MaterialShading<T>& m = scene_.shading[size_t(material)];
+        put(s.albedo, ColorLanes<T>::splat(Color<T>(1)), lanes, first);
+        if (m.emissive != Color<T>(0)) put(ambient, ColorLanes<T>::splat(m.ambient + m.emissive), lanes, first);
     }
 
     // Calls fn(a, b, lanes, first) for each distinct pair (a, b) among the

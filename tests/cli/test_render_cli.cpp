@@ -136,6 +136,10 @@ TEST(RenderCli, InfoTakesTheFlagsThatChooseAFrame) {
     EXPECT_EQ(past.status, 2);
     EXPECT_EQ(past.err, "firsthit: error: --frame must be in [0, 299], got 300\n");
     EXPECT_TRUE(past.out.empty()) << past.out;
+    const auto gltf_past = run_firsthit("info " + source_path("animations/gltf/demo.gltf") + " --frame 121");
+    EXPECT_EQ(gltf_past.status, 2);
+    EXPECT_EQ(gltf_past.err, "firsthit: error: --frame must be in [0, 120], got 121\n");
+    EXPECT_TRUE(gltf_past.out.empty()) << gltf_past.out;
     const auto scene_frame = run_firsthit("info " + source_path("animations/scene.yaml") + " --frame 2");
     EXPECT_EQ(scene_frame.status, 2);
     EXPECT_NE(scene_frame.err.find("--frame applies to movie files"), std::string::npos) << scene_frame.err;

@@ -111,8 +111,9 @@ struct Quad {
     bool uvs = true;                 // TEXCOORD_0
     std::vector<float> uv1;          // TEXCOORD_1 (8 numbers), or none
     bool degenerate_first = false;   // a zero-area triangle before its two
-    int layers = 1;                  // copies of it in the same primitive, each 0.01 higher
-    // COLOR_0, component by component for its 4 vertices (one layer), or none:
+    int layers = 1;                  // copies of it in the same primitive, each layer_step higher
+    double layer_step = 0.01;
+    // COLOR_0, component by component for its 4 vertices a layer, or none:
     // `color_kind` VEC3 or VEC4 of `color_type` (normalized when an integer,
     // unless `color_normalized` is false).
     std::vector<double> colors;
@@ -133,7 +134,7 @@ std::string quads_body(Bin& bin, const std::vector<Quad>& quads, const std::stri
         std::vector<int> index;
         if (q.degenerate_first) index = {0, 0, 1};
         for (int layer = 0; layer < q.layers; ++layer) {
-            const double z = q.z + 0.01 * layer;
+            const double z = q.z + q.layer_step * layer;
             auto at = [&](double x, double y) { return std::vector<float>{float(x / s), float(z / s), float(-y / s)}; };
             for (const auto& v : {at(q.x0, q.y1), at(q.x1, q.y1), at(q.x1, q.y0), at(q.x0, q.y0)})
                 p.insert(p.end(), v.begin(), v.end());
@@ -158,7 +159,7 @@ std::string quads_body(Bin& bin, const std::vector<Quad>& quads, const std::stri
             for (const double c : q.colors) f.push_back(float(c)), i.push_back(int(c));
             const int view = q.color_type == kFloat ? bin.f32(f) : q.color_type == kUnsignedByte ? bin.u8(i) : bin.u16(i);
             const bool normalized = q.color_type != kFloat && q.color_normalized;
-            accessors += ", " + accessor(view, q.color_type, 4, q.color_kind, normalized ? ", \"normalized\": true" : "");
+            accessors += ", " + accessor(view, q.color_type, n, q.color_kind, normalized ? ", \"normalized\": true" : "");
             attributes += ", \"COLOR_0\": " + std::to_string(a++);
         }
         accessors += ", " + accessor(bin.u16(index), kUnsignedShort, index.size(), "SCALAR");
@@ -1041,6 +1042,15 @@ TEST(GltfVertexColors, TheyMultiplyTheBaseColourAndTheTexture) {
             expect_pixel(plain, i, 3, {143, 0, 112}, "row 3");
             expect_pixel(plain, i, 7, {16, 0, 239}, "row 7");
         }
+        // Above 19 green layers in the same primitive, written first (40
+        // triangles, more than a leaf holds, the top ones first in the file
+        // and last in the tree's order): the top layer's own colours.
+        Quad layered = q;
+        layered.layers = 20;
+        layered.layer_step = -0.01;
+        for (int k = 0; k < 4 * 19; ++k) layered.colors.insert(layered.colors.end(), {0, 1, 0});
+        const Image top = top_view(lit(quads_file({layered}, surfaces({material("[1, 1, 1, 1]")})), ambient_only), p);
+        for (int i = 0; i < 8; ++i) expect_pixel(top, i, 3, {143, 0, 112}, "top layer, row 3");
         // A base colour factor of (0.5, 1, 1) halves the red.
         const Image half = top_view(lit(quads_file({q}, surfaces({material("[0.5, 1, 1, 1]")})), ambient_only), p);
         expect_pixel(half, 4, 3, {72, 0, 112}, "half red, row 3");
@@ -1061,15 +1071,38 @@ TEST(GltfVertexColors, EmissiveIsNotMultiplied) {
     // Base colour 0.2, emissive (0, 0.2, 0) = (0, 51, 0), ambient light only
     // (1): a quad with all-red vertex colours is 255 (0.2, 0, 0) + (0, 51, 0)
     // = (51, 51, 0); the same material on a quad without COLOR_0 (0.2, 0.2,
-    // 0.2) 255 + (0, 51, 0) = (51, 102, 51).
+    // 0.2) 255 + (0, 51, 0) = (51, 102, 51), and so is a plane of the
+    // world's own (z = -1) given that material by name, seen past the quads
+    // (half height 2: columns 0 and 7 see x = -1.7 and 1.8).
     Quad red{-1, 0, -1, 1, 0, 0}, plain{0, 1, -1, 1, 0, 0};
     red.colors = {1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0};
     const std::string json =
         quads_file({red, plain}, surfaces({material("[0.2, 0.2, 0.2, 1]", "", ", \"emissiveFactor\": [0, 0.2, 0]")}));
     for (const Precision p : kPrecisions) {
-        const Image im = top_view(lit(json, {1.0, 0.0}), p);
-        expect_pixel(im, 1, 4, {51, 51, 0}, "coloured quad");
-        expect_pixel(im, 6, 4, {51, 102, 51}, "quad without colours");
+        Scene s = lit(json, {1.0, 0.0});
+        ASSERT_EQ(s.material_names[0], "m/material 0");
+        s.planes.push_back({{0, 0, 1}, -1, 0});
+        const Image im = top_view(s, p, 8, 8, 2.0);
+        expect_pixel(im, 3, 4, {51, 51, 0}, "coloured quad");
+        expect_pixel(im, 4, 4, {51, 102, 51}, "quad without colours");
+        expect_pixel(im, 0, 4, {51, 102, 51}, "the world's plane, left");
+        expect_pixel(im, 7, 4, {51, 102, 51}, "the world's plane, right");
+    }
+}
+
+TEST(GltfVertexColors, ATexturedMaterialOnTheWorldsOwnSurfaceKeepsItsEmissive) {
+    // A file whose one node holds no mesh, and a textured material with
+    // emissive (0, 0.2, 0), given to a plane of the world's own: no
+    // instances, no texture coordinates, so albedo 1: 255 0.2 + (0, 51, 0).
+    const std::string json = gltf_json(
+        "\"scenes\": [{\"nodes\": [0]}], \"nodes\": [{}],\n" +
+        surfaces({material("[0.2, 0.2, 0.2, 1]", tex(0), ", \"emissiveFactor\": [0, 0.2, 0]")}, {{-1, 0}},
+                 {image_json(rgb_png(1, 1, 9, 9, 9))}));
+    for (const Precision p : kPrecisions) {
+        Scene s = lit(json, {1.0, 0.0});
+        ASSERT_TRUE(s.instances.empty());
+        s.planes.push_back({{0, 0, 1}, -1, 0});
+        expect_columns(top_view(s, p), 0, 8, {51, 102, 51}, "plane");
     }
 }
 
