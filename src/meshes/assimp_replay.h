@@ -74,7 +74,7 @@ private:
 // Bytes that end a line for assimp (IsLineEnd), as a table.
 struct LineEnds {
     bool at[256] = {};
-    constexpr LineEnds() { at['\r'] = at['\n'] = at['\0'] = at['\f'] = true; }
+    constexpr LineEnds() { at[size_t('\r')] = at[size_t('\n')] = at[size_t('\0')] = at[size_t('\f')] = true; }
 };
 inline constexpr LineEnds kLineEnds;
 
