@@ -54,11 +54,13 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const Material<double>& mat = scene.materials[m];
         const bool textured = (mat.texture >= 0 || coloured[m]) && (fx.ambient || fx.diffuse);
+        const dvec3 term = ambient[m];
         // (Added only when there is some: bytes as before for the report's.)
-        if (mat.emissive != dvec3(0) && !textured) ambient[m] += mat.emissive;
+        if (mat.emissive != dvec3(0)) ambient[m] += mat.emissive;
         const int whole = whole_exponent(mat.phong_exponent);
         f.shading.push_back({Color<T>(ambient[m]), mat.glazed, T(mat.reflectivity), T(mat.phong_exponent),
-                             whole >= 0, textured ? mat.texture : -1, textured ? Color<T>(mat.emissive) : Color<T>(0)});
+                             whole >= 0, textured ? mat.texture : -1, textured ? Color<T>(term) : Color<T>(0),
+                             textured ? Color<T>(mat.emissive) : Color<T>(0)});
         f.textured |= textured;
         f.fractional_exponents |= whole < 0 && fx.specular;
         if (whole > 0) f.exponent_bits = std::max(f.exponent_bits, int(std::bit_width(unsigned(whole))));

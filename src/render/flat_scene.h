@@ -16,16 +16,20 @@ namespace fh {
 // What shading reads about a material, in the tracer's type.
 template <typename T>
 struct MaterialShading {
-    Color<T> ambient{0};  // the ambient term, summed over the ambient lights
+    // The ambient term, summed over the ambient lights, plus the emissive
+    // colour: what a hit gets whose colour nothing tints.
+    Color<T> ambient{0};
     bool glazed = false;  // a hit sends a reflection ray
     T reflectivity = 0;
     T exponent = 0;       // Phong
     bool whole_exponent = true;  // the exponent is whole and at most kWholePowerLimit
     // A textured material (FlatScene::textures; -1: none): its texel colour
-    // multiplies `ambient` and the diffuse terms, and its emissive colour,
-    // kept apart here (in `ambient` otherwise), is added after. So too the
-    // vertex colours of a mesh that has them (with or without a texture).
+    // multiplies the ambient term alone (tinted_ambient) and the diffuse
+    // terms, and its emissive colour is added after. So too the vertex
+    // colours of a mesh that has them (with or without a texture). Both
+    // are 0 for a material nothing tints.
     int texture = -1;
+    Color<T> tinted_ambient{0};
     Color<T> emissive{0};
 };
 

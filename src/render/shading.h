@@ -150,7 +150,7 @@ private:
             geometry_.project(prim, p, point, normal, shading);
             const int material = geometry_.surfaces[size_t(prim)].material;
             put_hit(point, normal, shading, material, lanes, first, s, geometric, ambient);
-            if (scene_.textured) untextured(material, lanes, first, s, ambient);
+            if (scene_.textured) untextured(lanes, first, s);
         });
         finish_surfaces(ray, hit, geometric, ambient, s, local);
     }
@@ -213,7 +213,7 @@ private:
                 geometry_.project(prim, p, point, normal, shading);
                 const int material = geometry_.surfaces[size_t(prim)].material;
                 put_hit(point, normal, shading, material, lanes, first, s, geometric, ambient);
-                if (scene_.textured) untextured(material, lanes, first, s, ambient);
+                if (scene_.textured) untextured(lanes, first, s);
                 return;
             }
             const FlatInstance<T>& inst = instances_->instances[size_t(in)];
@@ -241,7 +241,7 @@ private:
         const MaterialShading<T>& m = scene_.shading[size_t(material)];
         const bool texel = m.texture >= 0 && !mesh.uvs.empty();
         if (!texel && mesh.colors.empty()) {
-            untextured(material, lanes, first, s, ambient);
+            untextured(lanes, first, s);
             return;
         }
         const Lanes<T> one = splat(T(1));
@@ -259,20 +259,18 @@ private:
             albedo = {albedo.x * c.x, albedo.y * c.y, albedo.z * c.z};
         }
         put(s.albedo, albedo, lanes, first);
-        put(ambient, ColorLanes<T>{albedo.x * m.ambient.x, albedo.y * m.ambient.y, albedo.z * m.ambient.z} + m.emissive,
+        put(ambient,
+            ColorLanes<T>{albedo.x * m.tinted_ambient.x, albedo.y * m.tinted_ambient.y, albedo.z * m.tinted_ambient.z} +
+                m.emissive,
             lanes, first);
     }
 
     // In a textured scene, a surface with neither texels nor vertex colours
-    // (any of the world's, or an instance's mesh without them): albedo 1,
-    // and a material whose emissive colour is kept apart (textured, or on
-    // coloured meshes elsewhere) still shines.
+    // (any of the world's, or an instance's mesh without them): albedo 1
+    // (put_hit's ambient, emissive included, is already its own).
     template <typename First>
-    FH_HOT_INLINE void untextured(int material, const LaneInts<T>& lanes, First first, SurfaceLanes& s,
-                                  ColorLanes<T>& ambient) const {
-        const MaterialShading<T>& m = scene_.shading[size_t(material)];
+    FH_HOT_INLINE void untextured(const LaneInts<T>& lanes, First first, SurfaceLanes& s) const {
         put(s.albedo, ColorLanes<T>::splat(Color<T>(1)), lanes, first);
-        if (m.emissive != Color<T>(0)) put(ambient, ColorLanes<T>::splat(m.ambient + m.emissive), lanes, first);
     }
 
     // Calls fn(a, b, lanes, first) for each distinct pair (a, b) among the
