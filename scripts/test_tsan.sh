@@ -12,7 +12,8 @@ build=${FIRSTHIT_TSAN_BUILD:-$here/build-tsan}
 flags="-fsanitize=thread -fno-omit-frame-pointer -DFIRSTHIT_NO_FORCED_INLINE"  # src/core/vec.h
 
 mkdir -p "$build"
-if ! { cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DFIRSTHIT_ARCH=x86-64-v3 \
+# Clang: a quarter faster to build than GCC with the same sanitizer.
+if ! { cmake -S "$here" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DFIRSTHIT_ARCH=x86-64-v3 \
          -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" &&
        cmake --build "$build" -j "$(nproc)" --target firsthit firsthit_tests; } >"$build/build.log" 2>&1; then
   echo "test_tsan: the build failed; the end of $build/build.log:" >&2
@@ -29,11 +30,30 @@ cd "$here"
 # memory under the high mmap randomisation of recent kernels.
 run=()
 if setarch "$(uname -m)" -R true 2>/dev/null; then run=(setarch "$(uname -m)" -R); fi
-"${run[@]}" "$build/tests/firsthit_tests" --gtest_filter="$filter" --gtest_brief=1
 # The tracer's tests (geometry, shading, rendering, the robustness battery,
 # the report's images) at this build's width.
 tracer='Packets.*:Shading.*:FlatScene.*:FastMath*:Intersections*:Accuracy.*:EffectPlan.*:ReportImages.*:Sampler.*'
 tracer+=':TileCulling.*:Camera*:Mirrors*:PlaneRobust*:ScaleInvariance*:SelfIntersection*:SphereRobust*'
 tracer+=':SpotRobust*:TriangleRobust*:SpotLight.*:RenderCli.*:Bvh*'
-"${run[@]}" "$build/tests/firsthit_tests" --gtest_filter="$tracer" --gtest_brief=1
+# Both sets in one run, shared out among one process a core (gtest's
+# sharding): a single process ran on one core for minutes.
+shards=$(nproc)
+pids=()
+for ((shard = 0; shard < shards; shard++)); do
+  GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$shard \
+    "${run[@]}" "$build/tests/firsthit_tests" --gtest_filter="$filter:$tracer" --gtest_brief=1 \
+    >"$build/shard$shard.log" 2>&1 &
+  pids+=($!)
+done
+status=0
+for ((shard = 0; shard < shards; shard++)); do
+  if wait "${pids[$shard]}"; then
+    grep -E '^\[ *PASSED' "$build/shard$shard.log" | sed "s/^/test_tsan: shard $shard: /" || true
+  else
+    echo "test_tsan: shard $shard FAILED; the end of its log:" >&2
+    tail -n 80 "$build/shard$shard.log" >&2
+    status=1
+  fi
+done
+[[ $status -eq 0 ]] || exit 1
 echo "test_tsan: no data race found"
