@@ -2,6 +2,7 @@
 // the Sub filter, the run deflate and the chunks, as `firsthit frames`
 // writes every frame.
 //   build/bench/firsthit_bench --benchmark_filter=Png
+//   (after cmake --build build --target firsthit_bench: not in the default build)
 #include <benchmark/benchmark.h>
 
 #include "images/png_writer.h"

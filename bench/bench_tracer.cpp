@@ -4,6 +4,7 @@
 // tile's camera rays against the report's scene, and the shading of that
 // tile. Frame-level timing is `firsthit bench`.
 //   build/bench/firsthit_bench [--benchmark_filter=Sphere]
+//   (after cmake --build build --target firsthit_bench: not in the default build)
 #include <benchmark/benchmark.h>
 
 #include <vector>

@@ -2,6 +2,7 @@
 // frame 100, 800x800), as `make movies` converts every frame on the render
 // threads before streaming it to the encoder.
 //   build/bench/firsthit_bench --benchmark_filter=Yuv
+//   (after cmake --build build --target firsthit_bench: not in the default build)
 #include <benchmark/benchmark.h>
 
 #include "video/yuv420.h"

@@ -14,8 +14,16 @@ build=${FIRSTHIT_ASAN_BUILD:-$here/build-asan}
 # inline, which makes this build minutes shorter.
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all -DFIRSTHIT_NO_FORCED_INLINE"
 
+[[ $# -gt 0 ]] || { echo "usage: scripts/build_asan.sh TARGET..." >&2; exit 2; }
+
 mkdir -p "$build"
-if ! { cmake -S "$here" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release \
+# A folder an older script configured with GCC starts afresh: told only of
+# a new compiler, CMake would drop the other options, sanitizers included.
+fresh=()
+if [[ -f $build/CMakeCache.txt ]] && ! grep -q '^CMAKE_CXX_COMPILER:.*clang' "$build/CMakeCache.txt"; then
+  fresh=(--fresh)
+fi
+if ! { cmake "${fresh[@]}" -S "$here" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release \
          -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DFIRSTHIT_ARCH=x86-64-v2 -DFIRSTHIT_FUZZ=ON \
          -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" &&
        cmake --build "$build" -j "$(nproc)" --target "$@"; } >"$build/build.log" 2>&1; then
@@ -23,3 +31,5 @@ if ! { cmake -S "$here" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_T
   tail -n 40 "$build/build.log" >&2
   exit 1
 fi
+grep -q '^CMAKE_CXX_FLAGS:.*-fsanitize=address' "$build/CMakeCache.txt" ||
+  { echo "build_asan: $build is not configured with -fsanitize=address" >&2; exit 1; }

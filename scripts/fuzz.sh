@@ -20,17 +20,19 @@ mkdir -p "$build/artifacts"
 declare -A dict=([scene]=yaml.dict [movie]=yaml.dict [gltf]=gltf.dict [mesh]=mesh.dict)
 declare -A max_len=([scene]=16384 [movie]=16384 [gltf]=65536 [mesh]=16384)
 kinds=(scene movie gltf mesh)
-fuzz_one() {  # KIND: runs its fuzzer; its log in $build/KIND.log
+fuzz_one() {  # KIND: runs its fuzzer in place of the (background) shell; its log in $build/KIND.log
   local kind=$1
   mkdir -p "$build/corpus/$kind"
-  LSAN_OPTIONS="suppressions=$here/fuzz/lsan.supp" "$build/fuzz/${kind}_fuzzer" "$build/corpus/$kind" \
+  LSAN_OPTIONS="suppressions=$here/fuzz/lsan.supp" exec "$build/fuzz/${kind}_fuzzer" "$build/corpus/$kind" \
     "$here/tests/fuzz/corpus/$kind" -dict="$here/fuzz/${dict[$kind]}" -max_total_time="$seconds" -timeout=10 \
     -rss_limit_mb=2048 -max_len="${max_len[$kind]}" -print_final_stats=1 \
     -artifact_prefix="$build/artifacts/$kind-" >"$build/$kind.log" 2>&1
 }
 # One fuzzer a core at a time; their reports in a fixed order.
-echo "fuzz: ${kinds[*]} for ${seconds} s each, $(nproc) at a time (logs: $build/KIND.log)"
+at_once=$(( $(nproc) < ${#kinds[@]} ? $(nproc) : ${#kinds[@]} ))
+echo "fuzz: ${kinds[*]} for ${seconds} s each, $at_once at a time (logs: $build/KIND.log)"
 declare -A pid
+trap 'kill "${pid[@]}" 2>/dev/null; exit 130' INT TERM
 status=0
 report() {  # KIND: waits for it, then says how it went
   local kind=$1 log="$build/$1.log"
@@ -46,10 +48,10 @@ report() {  # KIND: waits for it, then says how it went
 for ((i = 0; i < ${#kinds[@]}; i++)); do
   fuzz_one "${kinds[$i]}" &
   pid[${kinds[$i]}]=$!
-  done_one=$((i + 1 - $(nproc)))
+  done_one=$((i + 1 - at_once))
   if ((done_one >= 0)); then report "${kinds[$done_one]}"; fi
 done
-for ((i = ${#kinds[@]} - $(nproc) + 1; i < ${#kinds[@]}; i++)); do
+for ((i = ${#kinds[@]} - at_once + 1; i < ${#kinds[@]}; i++)); do
   ((i >= 0)) && report "${kinds[$i]}"
 done
 exit $status

@@ -14,7 +14,7 @@ packages=(build-essential cmake pkg-config libglm-dev libstb-dev libyaml-cpp-dev
           libtinygltf-dev nlohmann-json3-dev  # glTF 2.0 files (src/gltf)
           assimp-testmodels  # the glTF, OBJ, PLY, STL and OFF files of tests/gltf
           python3  # scripts/gltf_demo.py writes the glTF demo
-          clang libclang-rt-14-dev  # clang, libclang-rt: the fuzzers (scripts/fuzz.sh)
+          clang libclang-rt-14-dev  # clang, libclang-rt: the sanitizer builds and the fuzzers (scripts/test_tsan.sh, build_asan.sh)
           slurm-wlm munge  # a one-node Slurm cluster for tests/slurm/test_slurm.sh
           libembree-dev  # bench/embree_reference: the Embree 3 peer of the mesh benchmarks (optional at build time)
           libglfw3-dev libgl-dev  # firsthit view's window (optional at build time)

@@ -12,7 +12,7 @@
 
 // For the packet formulas (core/packet.h): they are fast only inlined into
 // the loop that calls them, and GCC's heuristics do not always inline them.
-// The sanitizer builds (scripts/test_sanitizers.sh, test_tsan.sh) define
+// The sanitizer builds (scripts/build_asan.sh, test_tsan.sh) define
 // FIRSTHIT_NO_FORCED_INLINE and let the compiler choose: forced inlining
 // under AddressSanitizer made render_float.cpp alone a 174 s compile (19 s
 // without), for code whose speed those builds do not measure.
