@@ -65,14 +65,10 @@ FlatInstance<T> flat_instance(const Instance& i, int cutout) {
     return f;
 }
 
-// The instances' matrices and boxes, and the top BVH: built anew, or (same
-// count) refitted over the tree `previous` has.
+// The scene's instances in T, each with its index into set.cutouts (filled
+// here: one a MASKed material).
 template <typename T>
-void place_instances(const Scene& scene, const std::vector<Aabb>& mesh_boxes, const InstanceSet<T>* previous,
-                     InstanceSet<T>& set, ThreadPool* pool) {
-    set.instances.clear();
-    set.instances.reserve(scene.instances.size());
-    set.cutouts.clear();
+void flatten_instances(const Scene& scene, InstanceSet<T>& set) {
     std::vector<int> cutout_of(scene.materials.size(), -1);
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const Material<double>& mat = scene.materials[m];
@@ -81,22 +77,32 @@ void place_instances(const Scene& scene, const std::vector<Aabb>& mesh_boxes, co
         set.cutouts.push_back({mat.texture >= 0 ? scene.textures[size_t(mat.texture)] : Texture{}, float(mat.alpha),
                                float(mat.alpha_cutoff)});
     }
-    std::vector<Aabb> boxes;
-    boxes.reserve(scene.instances.size());
-    for (const Instance& i : scene.instances) {
-        set.instances.push_back(flat_instance<T>(i, cutout_of[size_t(i.material)]));
-        boxes.push_back(world_box(mesh_boxes[size_t(i.mesh)], i.to_world));
+    set.instances.reserve(scene.instances.size());
+    for (const Instance& i : scene.instances) set.instances.push_back(flat_instance<T>(i, cutout_of[size_t(i.material)]));
+}
+
+// The instances' world boxes and the top BVH over them: built anew, or
+// (same count) refitted over the tree `previous` has, whose boxes serve the
+// instances `kept` marks (same matrices, same mesh box).
+template <typename T>
+void fit_top_level(const Scene& scene, const InstanceSet<T>* previous, const std::vector<bool>& kept,
+                   InstanceSet<T>& set, ThreadPool* pool) {
+    set.instance_boxes.resize(scene.instances.size());
+    for (size_t k = 0; k < scene.instances.size(); ++k) {
+        const Instance& i = scene.instances[k];
+        set.instance_boxes[k] = kept.empty() || !kept[k] ? world_box(set.mesh_boxes[size_t(i.mesh)], i.to_world)
+                                                         : previous->instance_boxes[k];
     }
-    if (previous && previous->bvh.prims.size() == boxes.size()) {
+    if (previous && previous->bvh.prims.size() == set.instance_boxes.size()) {
         set.bvh = previous->bvh;
-        refit_bvh(set.bvh, boxes);
+        refit_bvh(set.bvh, set.instance_boxes);
         set.walk_nodes = previous->walk_nodes;
         set.walk_from = previous->walk_from;
         refit_walk_boxes(set.walk_nodes, set.bvh, set.walk_from);
     } else {
-        set.bvh = build_bvh(boxes, pool, 1);
+        set.bvh = build_bvh(set.instance_boxes, pool, 1);
         // Every leaf lists its instance (no triangle runs at this level).
-        set.walk_nodes = walk_nodes_of<T>(set.bvh, PrimitiveIds{int(boxes.size()), 0, 0}, &set.walk_from);
+        set.walk_nodes = walk_nodes_of<T>(set.bvh, PrimitiveIds{int(set.instance_boxes.size()), 0, 0}, &set.walk_from);
     }
 }
 
@@ -127,7 +133,8 @@ std::shared_ptr<const InstanceSet<T>> InstanceSet<T>::build(const Scene& scene, 
                                             FlatGeometry<T>::build(mesh_scene(*scene.meshes[m].mesh), pool))
                                       : nullptr);
     set->mesh_boxes = boxes_of_meshes(scene);
-    place_instances<T>(scene, set->mesh_boxes, nullptr, *set, pool);
+    flatten_instances(scene, *set);
+    fit_top_level<T>(scene, nullptr, {}, *set, pool);
     return set;
 }
 
@@ -135,18 +142,31 @@ template <typename T>
 std::shared_ptr<const InstanceSet<T>> InstanceSet<T>::moved(const std::shared_ptr<const InstanceSet>& previous,
                                                             const Scene& moved, ThreadPool* pool) {
     // A movie's instances stand still between its keys, or until its wave
-    // reaches them: nothing to refit then. (A material's cutout cannot be
-    // animated, so each instance's index into the cutouts stays.)
+    // reaches them: nothing to refit then. Each instance is flattened once,
+    // and one that kept its matrices keeps its box. (A material's cutout
+    // cannot be animated, so each instance's index into the cutouts stays.)
     const BigArray<FlatInstance<T>>& before = previous->instances;
-    bool still = moved.deformations.empty() && moved.instances.size() == before.size();
-    for (size_t k = 0; still && k < before.size(); ++k)
-        still = same_bits(flat_instance<T>(moved.instances[k], before[k].cutout), before[k]);
-    if (still) return previous;
     auto set = std::make_shared<InstanceSet<T>>();
+    std::vector<bool> kept;
+    if (moved.instances.size() == before.size()) {
+        set->cutouts = previous->cutouts;
+        set->instances.reserve(before.size());
+        kept.resize(before.size());
+        bool still = moved.deformations.empty();
+        for (size_t k = 0; k < before.size(); ++k) {
+            set->instances.push_back(flat_instance<T>(moved.instances[k], before[k].cutout));
+            kept[k] = same_bits(set->instances[k], before[k]);
+            still = still && kept[k];
+        }
+        if (still) return previous;
+    } else {
+        flatten_instances(moved, *set);
+    }
     set->meshes = previous->meshes;
     set->mesh_boxes = previous->mesh_boxes;
     // Morphed and skinned meshes: the same triangles moved, so the same
-    // tree with its boxes refitted (scene/deformation.h).
+    // tree with its boxes refitted (scene/deformation.h); their instances'
+    // boxes are placed anew.
     for (const Deformation& d : moved.deformations) {
         const size_t m = size_t(d.mesh);
         if (!set->meshes[m]) continue;
@@ -154,7 +174,8 @@ std::shared_ptr<const InstanceSet<T>> InstanceSet<T>::moved(const std::shared_pt
         set->meshes[m] = std::make_shared<const FlatGeometry<T>>(set->meshes[m]->refit(mesh_scene(mesh), pool));
         set->mesh_boxes[m] = mesh_box(mesh);
     }
-    place_instances(moved, set->mesh_boxes, previous.get(), *set, pool);
+    if (!moved.deformations.empty()) kept.clear();
+    fit_top_level(moved, previous.get(), kept, *set, pool);
     return set;
 }
 

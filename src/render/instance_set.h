@@ -62,6 +62,7 @@ struct InstanceSet {
     std::vector<std::shared_ptr<const FlatGeometry<T>>> meshes;
     std::vector<Aabb> mesh_boxes;  // by Scene::meshes, in the mesh's space
     BigArray<FlatInstance<T>> instances;
+    std::vector<Aabb> instance_boxes;  // by instance, in world space (the top BVH's input)
     std::vector<Cutout> cutouts;  // the MASKed materials' (render/cutouts.h)
     Bvh bvh;  // over the instances' world boxes (a leaf: one instance)
     BigArray<WalkNode<T>> walk_nodes;

@@ -5,6 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -290,6 +295,64 @@ TEST(Bvh, BoxesBeyondFloatOrTooCloseForItStillMakeAValidTree) {
         expect_a_valid_tree(huge, build_bvh(huge, p, 8), 8, "beyond float");
         expect_a_valid_tree(close, build_bvh(close, p, 8), 8, "too close for float");
     }
+}
+
+// The tightest float box around a subtree's boxes, by libm: the largest
+// float at most each low bound, the smallest at least each high bound.
+float float_at_most(double v) {
+    const float f = float(v);
+    return double(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float float_at_least(double v) { return -float_at_most(-v); }
+
+// Every node's box, built or refitted, is its boxes' double box rounded out
+// to the nearest floats, not one float further: bounds that are floats
+// already (signed zeros among them), that round either way, that float
+// cannot hold (beyond its range, below its smallest denormal).
+TEST(Bvh, EveryNodeIsItsBoxesRoundedOutToTheNearestFloats) {
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const double values[] = {0.0, -0.0, 1e-320, -1e-320, 1e39, -1e39, 0.1, -0.1, 1.0, 3.0, -3.0};
+    auto bound = [&](int kind) {
+        switch (kind % 4) {
+        case 0: return values[rng() % std::size(values)];
+        case 1: return double(float(8 * u(rng)));
+        case 2: return 8 * u(rng);
+        default: return std::ldexp(u(rng), int(rng() % 300) - 150);
+        }
+    };
+    auto random_boxes = [&] {
+        std::vector<Aabb> boxes(500);
+        for (Aabb& b : boxes)
+            for (int a = 0; a < 3; ++a) {
+                const double x = bound(int(rng() % 4)), y = bound(int(rng() % 4));
+                b.lo[a] = std::min(x, y);
+                b.hi[a] = std::max(x, y);
+            }
+        return boxes;
+    };
+    auto expect_tight = [](const Bvh& bvh, const std::vector<Aabb>& boxes, const char* what) {
+        std::vector<Aabb> exact(bvh.nodes.size());
+        long loose = 0;
+        for (size_t k = bvh.nodes.size(); k-- > 0;) {
+            const BvhNode& n = bvh.nodes[k];
+            if (n.leaf())
+                for (int i = n.first; i < n.first + n.count; ++i) exact[k].grow(boxes[size_t(bvh.prims[size_t(i)])]);
+            else
+                exact[k] = exact[size_t(n.first)], exact[k].grow(exact[size_t(n.second)]);
+            for (int a = 0; a < 3; ++a)
+                loose += std::bit_cast<std::uint32_t>(n.lo[a]) != std::bit_cast<std::uint32_t>(float_at_most(exact[k].lo[a])) ||
+                         std::bit_cast<std::uint32_t>(n.hi[a]) != std::bit_cast<std::uint32_t>(float_at_least(exact[k].hi[a]));
+        }
+        EXPECT_EQ(loose, 0) << what;
+    };
+    const std::vector<Aabb> boxes = random_boxes();
+    Bvh bvh = build_bvh(boxes, nullptr, 2);
+    ASSERT_GT(bvh.nodes.size(), 100u);
+    expect_tight(bvh, boxes, "built");
+    const std::vector<Aabb> moved = random_boxes();
+    refit_bvh(bvh, moved);
+    expect_tight(bvh, moved, "refitted");
 }
 
 TEST(Bvh, LeafLimitOutsideWhatTheWalkHoldsIsRefused) {
