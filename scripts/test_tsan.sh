@@ -9,25 +9,8 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${FIRSTHIT_TSAN_BUILD:-$here/build-tsan}
-flags="-fsanitize=thread -fno-omit-frame-pointer -DFIRSTHIT_NO_FORCED_INLINE"  # src/core/vec.h
-
-mkdir -p "$build"
-# A folder an older version of this script configured with GCC starts
-# afresh: told only of a new compiler, CMake would drop the other options.
-fresh=()
-if [[ -f $build/CMakeCache.txt ]] && ! grep -q '^CMAKE_CXX_COMPILER:.*clang' "$build/CMakeCache.txt"; then
-  fresh=(--fresh)
-fi
 # Clang: a quarter faster to build than GCC with the same sanitizer.
-if ! { cmake "${fresh[@]}" -S "$here" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DFIRSTHIT_ARCH=x86-64-v3 \
-         -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" &&
-       cmake --build "$build" -j "$(nproc)" --target firsthit firsthit_tests; } >"$build/build.log" 2>&1; then
-  echo "test_tsan: the build failed; the end of $build/build.log:" >&2
-  tail -n 40 "$build/build.log" >&2
-  exit 1
-fi
-grep -q '^CMAKE_CXX_FLAGS:.*-fsanitize=thread' "$build/CMakeCache.txt" ||
-  { echo "test_tsan: $build is not configured with -fsanitize=thread" >&2; exit 1; }
+bash "$here/scripts/sanitizer_build.sh" "$build" x86-64-v3 thread firsthit firsthit_tests
 
 # Thread pool; multi-threaded renders giving the same bytes; the frames
 # command (one frame per worker, the interrupt watch) run as its own process.
