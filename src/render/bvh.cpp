@@ -52,7 +52,8 @@ using Ints4 = std::int32_t __attribute__((vector_size(16)));
 
 Floats4 round_down(const Doubles4& v) {
     const Floats4 f = __builtin_convertvector(v, Floats4);
-    // All ones where float(v) > v: never for an infinite or NaN float(v).
+    // All ones where float(v) > v (a finite v beyond float: +inf, stepped
+    // down to the largest float); never for an infinite or NaN v.
     const Ints4 rounded_up = __builtin_convertvector(__builtin_convertvector(f, Doubles4) > v, Ints4);
     // One step down: +x one less, -x (sign bit set) one more; +0 taken as
     // -0 first, whose step is the negative denormal.
@@ -342,10 +343,11 @@ void refit_bvh(Bvh& bvh, const std::vector<Aabb>& boxes) {
     const auto start = std::chrono::steady_clock::now();
     // Children follow their parent: from the back, both are done first. Only
     // a leaf's box is rounded to float; an inner node's is its children's
-    // float boxes joined, which is the same float as rounding the join of
+    // float boxes joined, which is the same value as rounding the join of
     // their double boxes (rounding down is monotone: the least of the
-    // rounded values is the rounded least), in the order Aabb::grow takes,
-    // so even signed zeros come out as a build's would.
+    // rounded values is the rounded least). Only the sign of a zero bound
+    // can differ from a build's (a tiny double and a -0 both ending as a
+    // float zero), which no box test tells apart.
     for (size_t k = bvh.nodes.size(); k-- > 0;) {
         BvhNode& n = bvh.nodes[k];
         if (n.leaf()) {

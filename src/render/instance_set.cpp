@@ -83,7 +83,7 @@ void flatten_instances(const Scene& scene, InstanceSet<T>& set) {
 
 // The instances' world boxes and the top BVH over them: built anew, or
 // (same count) refitted over the tree `previous` has, whose boxes serve the
-// instances `kept` marks (same matrices, same mesh box).
+// instances `kept` marks (the same maps in T, the same mesh box).
 template <typename T>
 void fit_top_level(const Scene& scene, const InstanceSet<T>* previous, const std::vector<bool>& kept,
                    InstanceSet<T>& set, ThreadPool* pool) {
@@ -143,7 +143,7 @@ std::shared_ptr<const InstanceSet<T>> InstanceSet<T>::moved(const std::shared_pt
                                                             const Scene& moved, ThreadPool* pool) {
     // A movie's instances stand still between its keys, or until its wave
     // reaches them: nothing to refit then. Each instance is flattened once,
-    // and one that kept its matrices keeps its box. (A material's cutout
+    // and one whose maps in T kept their bits keeps its box. (A material's cutout
     // cannot be animated, so each instance's index into the cutouts stays.)
     const BigArray<FlatInstance<T>>& before = previous->instances;
     auto set = std::make_shared<InstanceSet<T>>();
