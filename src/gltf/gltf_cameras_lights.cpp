@@ -67,7 +67,7 @@ void add_gltf_light(const tinygltf::Light& l, int index, int node, double exposu
             fail(name + ": outerConeAngle must be in (0, pi/2]");
         if (l.type == "spot" && !(l.spot.innerConeAngle >= 0 && l.spot.innerConeAngle < l.spot.outerConeAngle))
             fail(name + ": innerConeAngle must be in [0, outerConeAngle)");
-        if (l.type == "spot") spot.inner_angle = l.spot.innerConeAngle;
+        if (l.type == "spot") spot.inner_angle = l.spot.innerConeAngle, spot.gltf_cone = true;
         s.spot_lights.push_back(spot);
     } else {
         fail(name + ": light type '" + l.type + "' is not directional, point or spot");

@@ -84,10 +84,10 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
         // when not pruning) gets zero colour terms instead, so its shadow rays
         // are still traced.
         f.spot_lights.push_back({l.name, Color<T>(l.color), T(l.intensity), Vec3<T>(l.position),
-                                 Vec3<T>(l.axis), T(l.max_angle), T(l.inner_angle)});
+                                 Vec3<T>(l.axis), T(l.max_angle), T(l.inner_angle), l.gltf_cone});
         // theta never exceeds pi, so a cone that wide needs no test.
         const bool cone_test = !plan.pruned || l.max_angle < 3.14159265358979323846;
-        f.spot_widest_angles.push_back(cone_test ? T(l.max_angle) : kInfinity<T>);
+        f.spot_cones.push_back(f.spot_lights.back().cone(cone_test ? T(l.max_angle) : kInfinity<T>));
         add_terms(f.spot_terms, l.color, l.on ? 1.0 : 0.0);  // x falloff
     }
     return f;

@@ -50,7 +50,7 @@ struct FlatScene {
     std::vector<MaterialShading<T>> shading;    // by material
     std::vector<DirectionalLight<T>> directional_lights;
     std::vector<SpotLight<T>> spot_lights;
-    std::vector<T> spot_widest_angles;  // by spot light: SpotLight::radiance_at's widest_angle
+    std::vector<SpotCone<T>> spot_cones;  // by spot light: what SpotLight::radiance_at needs of its cone
     // Each light's colour products with each material: [light * shading.size() + material].
     std::vector<LightTerms<T>> directional_terms;
     std::vector<LightTerms<T>> spot_terms;

@@ -302,7 +302,7 @@ private:
             add_light(ray, s, hit, sample, &scene_.directional_terms[l * materials], local, counts);
         }
         for (size_t l = 0; l < scene_.spot_lights.size(); ++l)
-            add_light(ray, s, hit, scene_.spot_lights[l].radiance_at(s.point, scene_.spot_widest_angles[l]),
+            add_light(ray, s, hit, scene_.spot_lights[l].radiance_at(s.point, scene_.spot_cones[l]),
                       &scene_.spot_terms[l * materials], local, counts);
     }
 

@@ -171,7 +171,9 @@ TEST(GltfLights, PunctualLightsInTheDocumentedUnits) {
     expect_light(spot, "light 2", {255, 255, 255}, 15.0 / 255);
     EXPECT_DOUBLE_EQ(spot.max_angle, 0.6);
     EXPECT_DOUBLE_EQ(spot.inner_angle, 0.2);  // lit fully out to innerConeAngle
+    EXPECT_TRUE(spot.gltf_cone);             // then KHR_lights_punctual's falloff
     EXPECT_EQ(point.inner_angle, 0);
+    EXPECT_FALSE(point.gltf_cone);
     expect_vec(spot.position, {1, 0, 0});
     expect_vec(spot.axis, {-1, 0, 0});
     // Exposure 1: the lux and candela alone.

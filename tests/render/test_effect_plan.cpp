@@ -128,8 +128,8 @@ TEST(EffectPlan, EachFigureGetsThePlanSpecGivesIt) {
         const auto flat = FlatScene<double>::build(s, plan);
         if (n == 1) EXPECT_TRUE(flat.directional_lights.empty() && flat.spot_lights.empty());
         // Figure 5's cone is 2 pi wide: no cone test. Figure 6's is pi/4.
-        if (n == 5) EXPECT_EQ(flat.spot_widest_angles.at(0), kInfinity<double>);  // no cone test
-        if (n == 6) EXPECT_EQ(flat.spot_widest_angles.at(0), flat.spot_lights.at(0).max_angle);  // cone tested
+        if (n == 5) EXPECT_EQ(flat.spot_cones.at(0).widest_angle, kInfinity<double>);  // no cone test
+        if (n == 6) EXPECT_EQ(flat.spot_cones.at(0).widest_angle, flat.spot_lights.at(0).max_angle);  // cone tested
     }
 }
 

@@ -48,26 +48,34 @@ TEST(SpotLight, NarrowConeFallsToZeroAtItsEdge) {
     EXPECT_EQ(spot.radiance_at(dvec3{0, 0, 20}).intensity, 0);
 }
 
-// A glTF spot's inner cone: outer pi/4, inner pi/8. Inside the inner cone
-// the light is full; between the cones it falls linearly in theta,
-// (pi/4 - theta) / (pi/4 - pi/8); at the outer cone it is gone. The point is
-// on the plane z = -1, 11 below the light: d = 11 / cos(theta).
-TEST(SpotLight, AnInnerConeIsLitFullyThenFallsLinearlyToTheOuterCone) {
+// A glTF spot: outer pi/4, inner pi/8. Inside the inner cone the light is
+// full; between the cones s = (cos theta - cos pi/4) / (cos pi/8 - cos pi/4)
+// and the light s^2 (KHR_lights_punctual's falloff); at the outer cone it is
+// gone. The point is on the plane z = -1, 11 below the light: d = 11 /
+// cos(theta).
+TEST(SpotLight, AGltfSpotIsLitFullyInItsInnerConeThenFallsAsSSquared) {
     auto spot = report_spot(kPi / 4);
     spot.inner_angle = kPi / 8;
+    spot.gltf_cone = true;
     auto at = [&](double theta) {
         const double d = 11 / std::cos(theta);
         return spot.radiance_at(dvec3{11 * std::tan(theta), 0, -1}).intensity * d * d / 2.2;
     };
     EXPECT_NEAR(at(0), 1, 1e-12);
-    EXPECT_NEAR(at(kPi / 16), 1, 1e-12);              // inside the inner cone
+    EXPECT_NEAR(at(kPi / 16), 1, 1e-12);  // inside the inner cone
     EXPECT_NEAR(at(kPi / 8 - 1e-6), 1, 1e-12);
-    EXPECT_NEAR(at(3 * kPi / 16), 0.5, 1e-9);         // half way between the cones
-    EXPECT_NEAR(at(7 * kPi / 32), 0.25, 1e-9);        // three quarters of the way
-    EXPECT_LT(at(kPi / 4 - 1e-6), 1e-5);
+    // s = (0.8314696 - 0.7071068) / (0.9238795 - 0.7071068) = 0.5737014.
+    EXPECT_NEAR(at(3 * kPi / 16), 0.32913329741604624, 1e-12);
+    // Where cos theta is half way between the cones' cosines: s = 1/2.
+    EXPECT_NEAR(at(0.6172155603878475), 0.25, 1e-12);
+    EXPECT_LT(at(kPi / 4 - 1e-6), 1e-10);
     EXPECT_EQ(at(kPi / 4 + 1e-6), 0);
-    // Without it (inner 0) the report's factor: 1 - theta / (pi/4).
+    // With no inner cone (inner 0): s = (cos pi/8 - cos pi/4) / (1 - cos pi/4).
     spot.inner_angle = 0;
+    EXPECT_NEAR(at(kPi / 8), 0.5477605437034694, 1e-12);
+    // The report's spot ignores an inner angle: 1 - theta / (pi/4).
+    spot.gltf_cone = false;
+    spot.inner_angle = kPi / 8;
     EXPECT_NEAR(at(kPi / 16), 0.75, 1e-9);
     EXPECT_NEAR(at(3 * kPi / 16), 0.25, 1e-9);
 }
