@@ -3,7 +3,8 @@
 // rest is written to a file of that extension in a temporary folder (the
 // loader reads files: assimp and our header checks both open it). An accepted
 // mesh must hold what load_mesh promises: finite vertices, indices in range,
-// triangles of non-zero corners, normals one a vertex or none.
+// triangles of non-zero corners, normals one a vertex or none, colours one a
+// vertex in [0, 1] or none.
 //
 // A PLY input whose first byte also has its top bit set is moved across the
 // 1 MiB mark where assimp's line buffer reads its next block: comment lines
@@ -77,6 +78,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     if (mesh.triangles.empty()) broken("no triangles");
     if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()) broken("normals not one a vertex");
+    if (!mesh.colors.empty() && mesh.colors.size() != mesh.positions.size()) broken("colours not one a vertex");
+    for (const fh::dvec3& c : mesh.colors)
+        if (!(c.x >= 0 && c.x <= 1 && c.y >= 0 && c.y <= 1 && c.z >= 0 && c.z <= 1)) broken("a colour outside [0, 1]");
     for (const fh::dvec3& p : mesh.positions)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) broken("a vertex not finite");
     for (const auto& t : mesh.triangles) {

@@ -57,6 +57,8 @@
 #include <sstream>
 #include <unordered_map>
 
+#include <glm/common.hpp>
+
 #include "text/input_error.h"
 #include "meshes/assimp_messages.h"
 #include "meshes/mesh_file_headers.h"
@@ -214,10 +216,19 @@ bool check_read(const std::string& path, Format format, const aiScene& scene, st
     return all_normals;
 }
 
-// A vertex as joined across the file's meshes: its position, and its normal
-// when normals are kept.
+// Whether every mesh of the file has vertex colours (a PLY's red, green and
+// blue, an OBJ's `v x y z r g b`): kept then, else dropped.
+bool every_mesh_colored(const aiScene& scene) {
+    if (scene.mNumMeshes == 0) return false;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m)
+        if (!scene.mMeshes[m]->HasVertexColors(0)) return false;
+    return true;
+}
+
+// A vertex as joined across the file's meshes: its position, its normal
+// when normals are kept, its colour when colours are.
 struct VertexKey {
-    std::array<double, 6> v;
+    std::array<double, 9> v;
     bool operator==(const VertexKey& o) const { return v == o.v; }
 };
 
@@ -229,25 +240,38 @@ struct VertexKeyHash {
     }
 };
 
+// A vertex colour as the tracer takes it: each channel clamped into [0, 1]
+// (a PLY's bytes come as n / 255; its floats, and an OBJ's numbers, as they are).
+dvec3 vertex_color(const std::string& path, const aiColor4D& c) {
+    if (!(std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b)))
+        throw InputError(path, "a vertex has a non-finite colour: " + triple(aiVector3D(c.r, c.g, c.b)));
+    return glm::clamp(dvec3(c.r, c.g, c.b), 0.0, 1.0);
+}
+
 // The post-processed scene as one mesh: vertices joined across meshes (assimp
 // joins within each), triangles of zero area dropped, unused vertices gone;
-// normals kept when `all_normals` (check_read).
+// normals kept when `all_normals` (check_read), colours when every mesh of
+// the file has them.
 MeshData collect(const std::string& path, const aiScene& scene, bool all_normals) {
     bool keep_normals = all_normals && scene.mNumMeshes > 0;
+    const bool keep_colors = every_mesh_colored(scene);
     std::size_t vertex_count = 0, face_count = 0;
     for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
         keep_normals = keep_normals && scene.mMeshes[m]->HasNormals();
         vertex_count += scene.mMeshes[m]->mNumVertices;
         face_count += scene.mMeshes[m]->mNumFaces;
     }
-    // One mesh: JoinIdenticalVertices has joined it already (what it compares
-    // beyond the position and normal, RemoveComponent took away).
-    const bool join = scene.mNumMeshes > 1;
+    // One mesh without colours: JoinIdenticalVertices has joined it already
+    // (what it compares beyond the position and normal, RemoveComponent
+    // took away). With colours it is not run: assimp 5.2.5's joins vertices
+    // of different colours.
+    const bool join = scene.mNumMeshes > 1 || keep_colors;
     std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> ids;
     if (join) ids.reserve(vertex_count);
-    std::vector<dvec3> positions, normals;
+    std::vector<dvec3> positions, normals, colors;
     positions.reserve(vertex_count);
     if (keep_normals) normals.reserve(vertex_count);
+    if (keep_colors) colors.reserve(vertex_count);
     MeshData out;
     out.triangles.reserve(face_count);
     std::size_t points_and_lines = 0;
@@ -258,12 +282,14 @@ MeshData collect(const std::string& path, const aiScene& scene, bool all_normals
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
             const aiVector3D& p = mesh.mVertices[v];
             const aiVector3D n = keep_normals ? mesh.mNormals[v] : aiVector3D(0, 0, 0);
+            const dvec3 color = keep_colors ? vertex_color(path, mesh.mColors[0][v]) : dvec3(0);
             if (positions.size() >= std::numeric_limits<std::uint32_t>::max())
                 throw InputError(path, "more than 2^32 - 1 vertices");
             const auto next = static_cast<std::uint32_t>(positions.size());
             if (join) {
                 // + 0.0: -0 and 0 are one value.
-                const VertexKey key{{p.x + 0.0, p.y + 0.0, p.z + 0.0, n.x + 0.0, n.y + 0.0, n.z + 0.0}};
+                const VertexKey key{{p.x + 0.0, p.y + 0.0, p.z + 0.0, n.x + 0.0, n.y + 0.0, n.z + 0.0, color.r + 0.0,
+                                     color.g + 0.0, color.b + 0.0}};
                 const auto [it, added] = ids.try_emplace(key, next);
                 id[v] = it->second;
                 if (!added) continue;
@@ -272,6 +298,7 @@ MeshData collect(const std::string& path, const aiScene& scene, bool all_normals
             }
             positions.emplace_back(p.x, p.y, p.z);
             if (keep_normals) normals.emplace_back(n.x, n.y, n.z);
+            if (keep_colors) colors.push_back(color);
         }
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
             const aiFace& face = mesh.mFaces[f];
@@ -307,14 +334,17 @@ MeshData collect(const std::string& path, const aiScene& scene, bool all_normals
     if (used == positions.size()) {
         out.positions = std::move(positions);
         out.normals = std::move(normals);
+        out.colors = std::move(colors);
         return out;
     }
     out.positions.resize(used);
     if (keep_normals) out.normals.resize(used);
+    if (keep_colors) out.colors.resize(used);
     for (std::size_t i = 0; i < renumber.size(); ++i) {
         if (renumber[i] == kUnused) continue;
         out.positions[renumber[i]] = positions[i];
         if (keep_normals) out.normals[renumber[i]] = normals[i];
+        if (keep_colors) out.colors[renumber[i]] = colors[i];
     }
     for (auto& t : out.triangles)
         for (std::uint32_t& i : t) i = renumber[i];
@@ -345,12 +375,17 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
         check_result(path, format, log, scene, importer, binary_ply);
         const bool all_normals = check_read(path, format, *scene, max_triangles);
         // Vertices that differ only in what we do not keep are one vertex.
-        // STL's normals are its facets', not its vertices'.
-        int drop = aiComponent_COLORS | aiComponent_TEXCOORDS | aiComponent_TANGENTS_AND_BITANGENTS;
+        // STL's normals are its facets', not its vertices'. Vertex colours
+        // are kept where every mesh has them, and then joined by collect():
+        // assimp 5.2.5's JoinIdenticalVertices joins vertices of different
+        // colours.
+        const bool colors = every_mesh_colored(*scene);
+        int drop = aiComponent_TEXCOORDS | aiComponent_TANGENTS_AND_BITANGENTS;
+        if (!colors) drop |= aiComponent_COLORS;
         if (format == Format::stl) drop |= aiComponent_NORMALS;
         importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, drop);
         scene = importer.ApplyPostProcessing(aiProcess_RemoveComponent | aiProcess_Triangulate |
-                                             aiProcess_JoinIdenticalVertices);
+                                             (colors ? 0u : unsigned(aiProcess_JoinIdenticalVertices)));
         check_result(path, format, log, scene, importer, binary_ply);
         // assimp reads an OFF index "-1" as 0, silently: the face comes out
         // degenerate and is dropped. So where one was, the faces are read again.

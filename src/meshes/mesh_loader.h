@@ -27,6 +27,9 @@ struct MeshData {
     // or face without them, a zero normal), or only STL's per-facet normals,
     // which are not vertex normals. A NaN or infinite normal is an error.
     std::vector<dvec3> normals;
+    // One per position when every vertex has a colour (a PLY's red, green
+    // and blue, an OBJ's `v x y z r g b`), each channel in [0, 1]; else empty.
+    std::vector<dvec3> colors;
     // Indices into positions, in the file's winding order.
     std::vector<std::array<std::uint32_t, 3>> triangles;
     // Triangles of zero area dropped: two corners the same vertex, or

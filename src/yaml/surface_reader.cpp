@@ -65,7 +65,7 @@ public:
             const MeshData& data = load(m);
             scene_.degenerate_mesh_triangles += data.degenerate_dropped;
             auto mesh = std::make_shared<Mesh>(Mesh{data.positions, data.normals, data.triangles, 0,
-                                                    m.boolean_or("smooth", false), {}, {}});
+                                                    m.boolean_or("smooth", false), {}, data.colors});
             scene_.meshes.push_back({e.key, std::move(mesh)});
         }
     }
@@ -156,6 +156,14 @@ private:
         if (is_mesh && m.has("transform")) named.transform = read_transform(r_, m.value("transform"));
         const glm::dmat4 world = place.world * named.transform.matrix();
         if (place.group >= 0 || is_mesh) check_usable(m, world);
+        if (is_mesh && !load(m).colors.empty()) {
+            // Vertex colours: the world's own triangles carry none, so the
+            // file is a mesh of the scene, this surface an instance of it.
+            named.kind = SurfaceKind::instance;
+            named.index = scene_.instances.size();
+            scene_.instances.push_back({colored_mesh(m), material, world});
+            return;
+        }
         PlacedMesh placed;
         Mesh mesh = is_mesh ? read_mesh(m, material, place.group < 0 ? named.transform.matrix() : world, placed)
                             : read_triangle(m, material);
@@ -186,6 +194,21 @@ private:
         placed.triangles.resize(kept);
         if (mesh.smooth) placed.vertex_normals.resize(kept);
         return mesh;
+    }
+
+    // The scene mesh of a `type: mesh` file with vertex colours (one for each
+    // file and `smooth`, however many surfaces name it). It has no name: an
+    // instance cannot name it, only the file does.
+    int colored_mesh(const MapReader& m) {
+        const std::string key = relative(m, "file").string() + (m.boolean_or("smooth", false) ? "|smooth" : "");
+        const auto [it, added] = colored_meshes_.try_emplace(key, int(scene_.meshes.size()));
+        if (added) {
+            const MeshData& data = load(m);
+            scene_.degenerate_mesh_triangles += data.degenerate_dropped;
+            scene_.meshes.push_back({"", std::make_shared<Mesh>(Mesh{data.positions, data.normals, data.triangles, 0,
+                                                                     m.boolean_or("smooth", false), {}, data.colors})});
+        }
+        return it->second;
     }
 
     void read_instance(const YAML::Node& node, const Place& place, NamedSurface& named) {
@@ -281,9 +304,10 @@ private:
         const YAML::Node node = m.value("mesh");
         const std::string name = r_.string(node, "mesh");
         for (size_t i = 0; i < scene_.meshes.size(); ++i)
-            if (scene_.meshes[i].name == name) return int(i);
+            if (!name.empty() && scene_.meshes[i].name == name) return int(i);
         std::vector<std::string> names;
-        for (const SceneMesh& s : scene_.meshes) names.push_back(s.name);
+        for (const SceneMesh& s : scene_.meshes)
+            if (!s.name.empty()) names.push_back(s.name);
         const std::string hint = closest_match(name, names);
         if (!hint.empty()) r_.fail(node, "undefined mesh '" + name + "' (did you mean '" + hint + "'?)");
         if (names.empty()) r_.fail(node, "undefined mesh '" + name + "' (meshes are named in the scene's 'meshes:' section)");
@@ -321,6 +345,7 @@ private:
     std::vector<std::string>* warnings_;
     std::unordered_set<std::string> names_;
     std::map<std::string, MeshData> files_;
+    std::map<std::string, int> colored_meshes_;  // colored_mesh's, by file and smooth
 };
 
 }  // namespace

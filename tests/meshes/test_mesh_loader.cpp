@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -625,6 +626,53 @@ TEST(MeshLoader, NormalsOnlyWhenEveryVertexHasOne) {
     // Given for every vertex: kept.
     EXPECT_EQ(load_mesh(write_temp_file("all_normals.obj", tetra + "f 1//1 3//1 2//1\n")).normals,
               std::vector<dvec3>(3, dvec3(0, 0, -1)));
+}
+
+// A PLY of one triangle whose vertices carry `type` red, green and blue
+// properties with these values (three a vertex).
+std::string colored_ply(const std::string& type, const std::string& colors) {
+    std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    for (const char* c : {"red", "green", "blue"}) ply.append("property ").append(type).append(" ").append(c).append("\n");
+    ply += "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    std::istringstream values(colors);
+    for (const char* p : {"0 0 0", "1 0 0", "0 1 0"}) {
+        std::string r, g, b;
+        values >> r >> g >> b;
+        ply.append(p).append(" ").append(r).append(" ").append(g).append(" ").append(b).append("\n");
+    }
+    return ply + "3 0 1 2\n";
+}
+
+TEST(MeshLoader, VertexColoursWhenEveryVertexHasOne) {
+    // OBJ's `v x y z r g b`, as written.
+    MeshData m = load_mesh(write_temp_file("colored.obj", "v 0 0 0 1 0 0\nv 1 0 0 0 0.5 0\nv 0 1 0 0 0 0.25\nf 1 2 3\n"));
+    EXPECT_EQ(m.colors, (std::vector<dvec3>{{1, 0, 0}, {0, 0.5, 0}, {0, 0, 0.25}}));
+    // A PLY's bytes: n / 255.
+    m = load_mesh(write_temp_file("colored_bytes.ply", colored_ply("uchar", "255 0 51  0 255 0  102 102 102")));
+    ASSERT_EQ(m.colors.size(), 3u);
+    auto expect_near = [](const dvec3& got, const dvec3& want) {
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-7);  // assimp divides in float
+    };
+    expect_near(m.colors[0], {1, 0, 51 / 255.0});
+    expect_near(m.colors[2], dvec3(102 / 255.0));
+    // Its floats as they are, clamped into [0, 1].
+    m = load_mesh(write_temp_file("colored_floats.ply", colored_ply("float", "2 -1 0.5  0 1 0  0 0 1")));
+    ASSERT_EQ(m.colors.size(), 3u);
+    EXPECT_EQ(m.colors[0], dvec3(1, 0, 0.5));
+    // One position in two colours is two vertices, each with its colour.
+    m = load_mesh(write_temp_file("two_colors.obj", "v 0 0 0 1 0 0\nv 1 0 0 1 0 0\nv 0 1 0 1 0 0\n"
+                                                      "v 0 0 0 0 1 0\nv 0 0 1 0 1 0\nf 1 2 3\nf 4 3 5\n"));
+    ASSERT_EQ(m.positions.size(), 5u);
+    ASSERT_EQ(m.triangles.size(), 2u);
+    EXPECT_EQ(m.colors[m.triangles[0][0]], dvec3(1, 0, 0));
+    EXPECT_EQ(m.colors[m.triangles[1][0]], dvec3(0, 1, 0));
+    // None: no colours.
+    EXPECT_TRUE(load_mesh(write_temp_file("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).colors.empty());
+}
+
+TEST(MeshLoaderErrors, NonFiniteVertexColour) {
+    EXPECT_EQ(mesh_error("nan_color.ply", colored_ply("float", "0 0 0  nan 1 0  0 0 1")),
+              "FILE: error: a vertex has a non-finite colour: (nan, 1, 0)");
 }
 
 TEST(MeshLoaderErrors, NonFiniteNormals) {

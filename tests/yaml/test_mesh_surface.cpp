@@ -142,6 +142,39 @@ TEST(MeshSurface, FileNormalsMoveByTheInverseTranspose) {
     for (const dvec3& n : s.vertex_normals[0]) expect_near(n, glm::normalize(dvec3(0.5, 0, 1)));
 }
 
+// A mesh file with vertex colours: they multiply the material's ambient
+// and diffuse colours. Ambient light only (255 1/255 of the white
+// material's ambient 1: 255 a channel), one triangle of colour (0.2, 0.4, 1)
+// across the whole view: every pixel 255 times it.
+TEST(MeshSurface, VertexColoursMultiplyTheMaterialsColours) {
+    write_temp_file("meshes/colored.obj", "v -100 0 -100 0.2 0.4 1\nv 100 0 -100 0.2 0.4 1\nv 0 0 100 0.2 0.4 1\nf 1 2 3\n");
+    const std::string scene =
+        "materials:\n"
+        "  white: {color: [255, 255, 255], ambient: 1, diffuse: 0, specular: 0, phong_exponent: 1}\n"
+        "cameras:\n"
+        "  c: {type: perspective, width: 8, height: 8, view_point: [0, -10, 0], look_at: [0, 1, 0], up: [0, 0, 1],\n"
+        "      projection_distance: 10}\n"
+        "lights:\n  a: {type: ambient, color: [255, 255, 255], intensity: 0.00392156862745098}\n"
+        "effects: [ambient]\n"
+        "surfaces:\n  - {type: mesh, name: m, file: meshes/colored.obj, material: white}\n";
+    const auto loaded = load_scene(write_temp_file("colored_mesh.yaml", scene));
+    // The world's triangles carry no colours: the file is a scene mesh and
+    // the surface an instance of it, still named.
+    EXPECT_TRUE(loaded.scene.triangles.empty());
+    ASSERT_EQ(loaded.scene.instances.size(), 1u);
+    ASSERT_NE(loaded.scene.find_surface("m"), nullptr);
+    for (const Precision p : {Precision::float32, Precision::float64}) {
+        RenderSettings settings = loaded.settings;
+        settings.precision = p;
+        const FrameResult r = render_frame(loaded.scene, loaded.scene.cameras[0], settings, nullptr);
+        for (size_t i = 0; i < r.image.rgb.size(); i += 3) {
+            EXPECT_EQ(int(r.image.rgb[i]), 51);
+            EXPECT_EQ(int(r.image.rgb[i + 1]), 102);
+            EXPECT_EQ(int(r.image.rgb[i + 2]), 255);
+        }
+    }
+}
+
 TEST(MeshSurface, SmoothRoofRendersFiniteAndShadesDifferently) {
     write_roof();
     const std::string head = kHead + "lights:\n  sun: {type: directional, color: [255, 255, 255], intensity: 0.01,"
