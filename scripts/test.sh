@@ -5,6 +5,9 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/scripts/setup.sh"
 cd "$here/build"
+# The micro-benchmarks are built only when asked for (bench/CMakeLists.txt):
+# compiled here, not run, so that they keep up with the tracer.
+cmake --build . --target firsthit_bench -j "$(nproc)" >/dev/null
 ctest --output-on-failure -j "$(nproc)"
 # The same tests again through each lower x86-64 level this CPU runs, forced
 # (FIRSTHIT_ISA, src/render/levels.h): the one binary's copies of the tracer
