@@ -52,13 +52,12 @@ std::uint64_t ply_type_bytes(const std::string& type) {
 }  // namespace
 
 
-// The PLY header's element counts against the bytes after it. Returns
-// whether the data is binary. Leaves files that do not start with "ply" to
-// assimp, which says so.
-bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
+// The PLY header's element counts against the bytes after it. Leaves files
+// that do not start with "ply" to assimp, which says so.
+PlyHeader check_ply_header(const std::string& path, std::uintmax_t file_size) {
     constexpr std::size_t kMaxHeader = std::size_t(1) << 20;
     const std::string head = read_head(path, kMaxHeader);
-    if (lowercase(head.substr(0, 3)) != "ply") return false;
+    if (lowercase(head.substr(0, 3)) != "ply") return {};
     std::size_t end = std::string::npos;
     for (std::size_t at = head.find("end_header"); at != std::string::npos; at = head.find("end_header", at + 1)) {
         const std::size_t after = at + 10;
@@ -89,6 +88,7 @@ bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
     };
     std::vector<Element> elements;
     bool binary = false;
+    int color_channels = 0;  // the vertex element's red, green and blue of a type drawn (PlyHeader)
     std::istringstream lines(head.substr(0, end));
     for (std::string line; std::getline(lines, line);) {
         std::istringstream words(line);
@@ -109,6 +109,13 @@ bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
         } else if (word == "property" && !elements.empty()) {
             words >> name;  // the type; for a list, the type of its length
             if (name == "list") words >> name;
+            std::string property;
+            words >> property;
+            const bool drawn_type = name == "uchar" || name == "uint8" || name == "float" || name == "float32" ||
+                                    name == "double" || name == "float64";
+            if (elements.back().name == "vertex" && drawn_type &&
+                (property == "red" || property == "green" || property == "blue"))
+                ++color_channels;
             // ASCII: a value and a separator.
             elements.back().bytes += binary ? ply_type_bytes(name) : 2;
         }
@@ -129,7 +136,7 @@ bool check_ply_header(const std::string& path, std::uintmax_t file_size) {
         throw InputError(path,
                          "binary PLY data starting with byte 0x0a: assimp takes it for the header's line end and "
                          "misreads everything after it (assimp issue #5341)");
-    return binary;
+    return {binary, color_channels == 3};
 }
 
 // The OFF header's vertex and face counts against the file's size: a vertex

@@ -9,9 +9,17 @@
 
 namespace fh {
 
+struct PlyHeader {
+    bool binary = false;
+    // The vertex element has red, green and blue properties, each a uchar
+    // (assimp reads n / 255) or a float or double (as it is). Colours of
+    // other types assimp scales oddly (an int n as n / 255 + 0.5): not drawn.
+    bool colors = false;
+};
+
 // InputError(path, ...) when the header is cut short or declares more data
-// than the file holds. Returns true for binary PLY data.
-bool check_ply_header(const std::string& path, std::uintmax_t file_size);
+// than the file holds.
+PlyHeader check_ply_header(const std::string& path, std::uintmax_t file_size);
 void check_off_header(const std::string& path, std::uintmax_t file_size);
 
 }  // namespace fh

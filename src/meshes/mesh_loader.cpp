@@ -250,11 +250,10 @@ dvec3 vertex_color(const std::string& path, const aiColor4D& c) {
 
 // The post-processed scene as one mesh: vertices joined across meshes (assimp
 // joins within each), triangles of zero area dropped, unused vertices gone;
-// normals kept when `all_normals` (check_read), colours when every mesh of
-// the file has them.
-MeshData collect(const std::string& path, const aiScene& scene, bool all_normals) {
+// normals kept when `all_normals` (check_read), colours when `keep_colors`
+// (every mesh has them, and the format's check says they are drawn).
+MeshData collect(const std::string& path, const aiScene& scene, bool all_normals, bool keep_colors) {
     bool keep_normals = all_normals && scene.mNumMeshes > 0;
-    const bool keep_colors = every_mesh_colored(scene);
     std::size_t vertex_count = 0, face_count = 0;
     for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
         keep_normals = keep_normals && scene.mMeshes[m]->HasNormals();
@@ -357,12 +356,19 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
     const std::uintmax_t size = check_file(path);
     const Format format = format_of(path);
     bool binary_ply = false;
+    // Whether the file's vertex colours may be drawn (OBJ and PLY: the
+    // checks below say; OFF's and STL's are not: a COFF's are often 0-255
+    // integers, which assimp takes as they are, and a binary STL's are
+    // per facet, often junk in its attribute bytes).
+    bool colors_drawn = false;
     if (format == Format::ply) {
-        binary_ply = check_ply_header(path, size);
+        const PlyHeader header = check_ply_header(path, size);
+        binary_ply = header.binary;
+        colors_drawn = header.colors;
         check_ply_lists(path);
     }
     if (format == Format::off) check_off_header(path, size);
-    if (format == Format::obj) check_obj_lines(path);
+    if (format == Format::obj) colors_drawn = check_obj_lines(path);
     try {
         AssimpMessages log;
         Assimp::Importer importer;
@@ -379,7 +385,7 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
         // are kept where every mesh has them, and then joined by collect():
         // assimp 5.2.5's JoinIdenticalVertices joins vertices of different
         // colours.
-        const bool colors = every_mesh_colored(*scene);
+        const bool colors = colors_drawn && every_mesh_colored(*scene);
         int drop = aiComponent_TEXCOORDS | aiComponent_TANGENTS_AND_BITANGENTS;
         if (!colors) drop |= aiComponent_COLORS;
         if (format == Format::stl) drop |= aiComponent_NORMALS;
@@ -396,7 +402,7 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
         };
         MeshData mesh;
         try {
-            mesh = collect(path, *scene, all_normals);
+            mesh = collect(path, *scene, all_normals, colors);
         } catch (const InputError&) {
             check_off_indices();  // "no triangles": all of them dropped
             throw;

@@ -49,27 +49,41 @@ int line_vertices(const std::string& line, bool texture_coordinates, bool normal
     return vertices;
 }
 
+// The words of a statement, separated by spaces and tabs.
+int words(const std::string& statement) {
+    int n = 0;
+    bool in_word = false;
+    for (const char c : statement) {
+        const bool blank = c == ' ' || c == '\t';
+        n += !blank && !in_word;
+        in_word = !blank;
+    }
+    return n;
+}
+
 }  // namespace
 
-void check_obj_lines(const std::string& path) {
+bool check_obj_lines(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) return;  // the loader says why
+    if (!in) return false;  // the loader says why
     // The statement being read: its first two characters and its length,
-    // and all of it for a line statement; the physical line it starts on.
+    // and all of it for a line or vertex statement; the physical line it
+    // starts on. How many vertex statements, and how many with a colour.
     std::string line;
     char first = '\0', second = '\0';
     std::size_t length = 0;
     int number = 1, starts = 1;
     bool texture_coordinates = false, normals = false;
+    std::size_t vertex_statements = 0, colored_vertices = 0;
     auto take = [&](char c) {
         if (length == 0) first = c;
         if (length == 1) second = c;
         ++length;
-        if (first == 'l') line += c;
+        if (first == 'l' || first == 'v') line += c;
     };
     auto untake = [&] {  // the last character taken
         --length;
-        if (first == 'l') line.pop_back();
+        if (first == 'l' || first == 'v') line.pop_back();
         if (length == 0) first = '\0';
         if (length == 1) second = '\0';
     };
@@ -77,6 +91,10 @@ void check_obj_lines(const std::string& path) {
         if (first == 'v' && length >= 2) {
             texture_coordinates |= second == 't';
             normals |= second == 'n';
+            if (second == ' ' || second == '\t') {
+                ++vertex_statements;
+                colored_vertices += words(line) == 7;  // "v" and six numbers
+            }
         }
         if (first == 'l') {
             const int n = line_vertices(line, texture_coordinates, normals);
@@ -127,6 +145,7 @@ void check_obj_lines(const std::string& path) {
         }
     }
     if (length > 0) statement_ends();
+    return vertex_statements > 0 && colored_vertices == vertex_statements;
 }
 
 }  // namespace fh

@@ -20,6 +20,10 @@
 namespace fh {
 
 // InputError(path, line, 1, ...) for the first line statement above.
-void check_obj_lines(const std::string& path);
+// Returns whether every vertex statement gives a colour (`v x y z r g b`:
+// six numbers, which assimp reads as a position and a colour). assimp gives
+// the k-th colour it read to the k-th vertex, so a file that colours only
+// some of its vertices has its colours on the wrong ones: not drawn.
+bool check_obj_lines(const std::string& path);
 
 }  // namespace fh

@@ -158,7 +158,9 @@ private:
         if (place.group >= 0 || is_mesh) check_usable(m, world);
         if (is_mesh && !load(m).colors.empty()) {
             // Vertex colours: the world's own triangles carry none, so the
-            // file is a mesh of the scene, this surface an instance of it.
+            // file is a mesh of the scene, this surface an instance of it
+            // (its zero-area triangles counted for each surface, as below).
+            scene_.degenerate_mesh_triangles += load(m).degenerate_dropped;
             named.kind = SurfaceKind::instance;
             named.index = scene_.instances.size();
             scene_.instances.push_back({colored_mesh(m), material, world});
@@ -204,7 +206,6 @@ private:
         const auto [it, added] = colored_meshes_.try_emplace(key, int(scene_.meshes.size()));
         if (added) {
             const MeshData& data = load(m);
-            scene_.degenerate_mesh_triangles += data.degenerate_dropped;
             scene_.meshes.push_back({"", std::make_shared<Mesh>(Mesh{data.positions, data.normals, data.triangles, 0,
                                                                      m.boolean_or("smooth", false), {}, data.colors})});
         }

@@ -670,6 +670,27 @@ TEST(MeshLoader, VertexColoursWhenEveryVertexHasOne) {
     EXPECT_TRUE(load_mesh(write_temp_file("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).colors.empty());
 }
 
+TEST(MeshLoader, VertexColoursNotDrawnWhereAssimpWouldMisreadThem) {
+    // An OBJ colouring some vertices only: assimp would give the first
+    // colour to the first vertex, whichever line it was on.
+    EXPECT_TRUE(load_mesh(write_temp_file("some_colored.obj", "v 0 0 0\nv 1 0 0 1 0 0\nv 0 1 0\nf 1 2 3\n"))
+                    .colors.empty());
+    // A PLY's int colours (assimp: n / 255 + 0.5), or alpha alone.
+    EXPECT_TRUE(load_mesh(write_temp_file("int_colors.ply", colored_ply("int", "255 0 0  0 255 0  0 0 255")))
+                    .colors.empty());
+    std::string alpha_only = colored_ply("uchar", "1 2 3  4 5 6  7 8 9");
+    alpha_only.replace(alpha_only.find("property uchar red\nproperty uchar green\nproperty uchar blue"), 59,
+                       "property uchar alpha\nproperty uchar a1\nproperty uchar a2");
+    const MeshData a = load_mesh(write_temp_file("alpha_only.ply", alpha_only));
+    EXPECT_EQ(a.triangles.size(), 1u);
+    EXPECT_TRUE(a.colors.empty());
+    // An OFF's (COFF) colours, often 0-255 integers, which assimp takes as they are.
+    const MeshData off = load_mesh(write_temp_file("colored.off", "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n"
+                                                                  "0 1 0 0 0 255 255\n3 0 1 2\n"));
+    EXPECT_EQ(off.triangles.size(), 1u);
+    EXPECT_TRUE(off.colors.empty());
+}
+
 TEST(MeshLoaderErrors, NonFiniteVertexColour) {
     EXPECT_EQ(mesh_error("nan_color.ply", colored_ply("float", "0 0 0  nan 1 0  0 0 1")),
               "FILE: error: a vertex has a non-finite colour: (nan, 1, 0)");
