@@ -102,12 +102,13 @@ public:
         return uvs;
     }
 
-    // COLOR_0, linear: a VEC3 or VEC4 (its alpha not drawn) of floats or
-    // normalized unsigned bytes or shorts, each channel clamped to [0, 1].
-    // Empty when the primitive has none.
-    std::vector<dvec3> read_colors(const tinygltf::Primitive& prim, const std::string& what) const {
+    // COLOR_0, linear: a VEC3 or VEC4 of floats or normalized unsigned
+    // bytes or shorts, each channel clamped to [0, 1], into mesh.colors; a
+    // VEC4's alphas into mesh.alphas unless every one is 1. Nothing when the
+    // primitive has none.
+    void read_colors(const tinygltf::Primitive& prim, const std::string& what, Mesh& mesh) const {
         const auto attribute = prim.attributes.find("COLOR_0");
-        if (attribute == prim.attributes.end()) return {};
+        if (attribute == prim.attributes.end()) return;
         const int index = attribute->second;
         if (index < 0 || size_t(index) >= m_.accessors.size()) fail(what + ": COLOR_0's accessor does not exist");
         const tinygltf::Accessor& a = m_.accessors[size_t(index)];
@@ -118,12 +119,18 @@ public:
             fail(what + ": COLOR_0 is not floats or normalized unsigned bytes or shorts");
         const int components = a.type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
         const std::vector<double> c = read_.numbers(index, components, what + " COLOR_0");
-        std::vector<dvec3> colors(c.size() / size_t(components));
-        for (size_t i = 0; i < colors.size(); ++i) {
+        const size_t n = c.size() / size_t(components);
+        mesh.colors.resize(n);
+        if (components == 4) mesh.alphas.resize(n);
+        bool translucent = false;
+        for (size_t i = 0; i < n; ++i) {
             const double* x = &c[size_t(components) * i];
-            colors[i] = glm::clamp(dvec3(x[0], x[1], x[2]), 0.0, 1.0);
+            mesh.colors[i] = glm::clamp(dvec3(x[0], x[1], x[2]), 0.0, 1.0);
+            if (components < 4) continue;
+            mesh.alphas[i] = std::clamp(x[3], 0.0, 1.0);
+            translucent |= mesh.alphas[i] < 1;
         }
-        return colors;
+        if (!translucent) mesh.alphas.clear();
     }
 
     Mesh read_primitive(const tinygltf::Primitive& prim, const std::string& what) const {
@@ -182,7 +189,7 @@ Mesh read_gltf_primitive(const tinygltf::Model& model, const AccessorReader& rea
     const PrimitiveReader reader(model, read);
     Mesh mesh = reader.read_primitive(prim, what);
     mesh.uvs = reader.read_uvs(prim, what);
-    mesh.colors = reader.read_colors(prim, what);
+    reader.read_colors(prim, what, mesh);
     return mesh;
 }
 

@@ -20,17 +20,11 @@ namespace fh {
 inline constexpr int kMaxCutoutLayers = 64;
 
 // Where a material's surface is: alpha times its texture's alpha (when it
-// has one) at least cutoff.
+// has one) times the mesh's vertex alpha (when it has them) at least cutoff.
 struct Cutout {
     Texture texture;  // image null: alpha alone
     float alpha = 1;
     float cutoff = 0.5f;
-
-    // Per lane of `lanes`: the surface is there at (u, v) (texture.image set).
-    template <typename T>
-    FH_HOT_INLINE LaneInts<T> solid(const Lanes<T>& u, const Lanes<T>& v, const LaneInts<T>& lanes) const {
-        return lanes & (T(alpha) * texture.sample<T>(u, v).a >= T(cutoff));
-    }
 };
 
 // Per lane: whether the surface is there at the points p of the active
@@ -38,16 +32,23 @@ struct Cutout {
 template <typename T>
 FH_HOT_INLINE LaneInts<T> solid_at(const FlatGeometry<T>& mesh, const Cutout& cut, const LaneInts<T>& prim,
                                    const Vec3Lanes<T>& p, LaneInts<T> active) {
-    if (!cut.texture.image || mesh.uvs.empty()) return cut.alpha >= cut.cutoff ? active : LaneInts<T>{};
+    const bool texels = cut.texture.image && !mesh.uvs.empty();
+    if (!texels && mesh.alphas.empty()) return cut.alpha >= cut.cutoff ? active : LaneInts<T>{};
     LaneInts<T> solid{};
     while (any(active)) {
         int first = 0;
         while (!active[first]) ++first;
         const LaneInts<T> same = active & (prim == prim[first]);
-        Lanes<T> b1, b2, u, v;
+        Lanes<T> b1, b2;
         mesh.weights_at(int(prim[first]), p, b1, b2);
-        mesh.uv_at(int(prim[first]), b1, b2, u, v);
-        solid |= cut.solid<T>(u, v, same);
+        Lanes<T> alpha = splat(T(cut.alpha));
+        if (texels) {
+            Lanes<T> u, v;
+            mesh.uv_at(int(prim[first]), b1, b2, u, v);
+            alpha = alpha * cut.texture.sample<T>(u, v).a;
+        }
+        if (!mesh.alphas.empty()) alpha = alpha * mesh.alpha_at(int(prim[first]), b1, b2);
+        solid |= same & (alpha >= T(cut.cutoff));
         active &= ~same;
     }
     return solid;

@@ -77,6 +77,8 @@ void flatten(const Scene& scene, FlatGeometry<T>& g) {
         g.uvs.push_back({T(c[0].x), T(c[0].y), T(c[1].x), T(c[1].y), T(c[2].x), T(c[2].y)});
     g.colors.clear();
     for (const auto& c : scene.triangle_colors) g.colors.push_back({Color<T>(c[0]), Color<T>(c[1]), Color<T>(c[2])});
+    g.alphas.clear();
+    for (const auto& a : scene.triangle_alphas) g.alphas.push_back({T(a[0]), T(a[1]), T(a[2])});
     g.triangles.reserve(g.triangle_source.size());
     for (const std::int32_t i : g.triangle_source) {
         const Triangle<double>& t = scene.triangles[size_t(i)];

@@ -103,6 +103,10 @@ template <typename T>
 struct TriangleColors {
     Color<T> c0, c1, c2;
 };
+template <typename T>
+struct TriangleAlphas {
+    T a0, a1, a2;
+};
 
 // The normal turned to face the ray (report 8.4).
 template <typename T>
@@ -158,6 +162,8 @@ struct FlatGeometry {
     BigArray<TriangleUvs<T>> uvs;
     // An instance's mesh with vertex colours: each triangle's, the same way.
     BigArray<TriangleColors<T>> colors;
+    // An instance's mesh with vertex alphas (a glTF COLOR_0's): the same.
+    BigArray<TriangleAlphas<T>> alphas;
     static constexpr bool kPackedRows = std::is_same_v<T, float>;
 
     // pool: the BVH is built on it (nullptr: on the calling thread).
@@ -215,6 +221,12 @@ struct FlatGeometry {
         const TriangleColors<T>& c = colors[size_t(triangle_source[size_t(ids.triangle_index(prim))])];
         auto channel = [&](T x0, T x1, T x2) FH_HOT_LAMBDA { return x0 + b1 * (x1 - x0) + b2 * (x2 - x0); };
         return {channel(c.c0.x, c.c1.x, c.c2.x), channel(c.c0.y, c.c1.y, c.c2.y), channel(c.c0.z, c.c1.z, c.c2.z)};
+    }
+
+    // The vertex alpha of triangle `prim` at weights b1, b2 (alphas not empty).
+    FH_HOT_INLINE Lanes<T> alpha_at(int prim, const Lanes<T>& b1, const Lanes<T>& b2) const {
+        const TriangleAlphas<T>& a = alphas[size_t(triangle_source[size_t(ids.triangle_index(prim))])];
+        return a.a0 + b1 * (a.a1 - a.a0) + b2 * (a.a2 - a.a0);
     }
 
     // Point, normals facing the ray, and material of one hit (tests): the

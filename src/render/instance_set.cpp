@@ -22,6 +22,11 @@ Scene mesh_scene(const Mesh& mesh) {
         for (const auto& t : mesh.triangles)
             s.triangle_colors.push_back({mesh.colors[t[0]], mesh.colors[t[1]], mesh.colors[t[2]]});
     }
+    if (!mesh.alphas.empty()) {
+        s.triangle_alphas.reserve(mesh.triangles.size());
+        for (const auto& t : mesh.triangles)
+            s.triangle_alphas.push_back({mesh.alphas[t[0]], mesh.alphas[t[1]], mesh.alphas[t[2]]});
+    }
     return s;
 }
 

@@ -39,8 +39,12 @@ struct Mesh {
     // material's KHR_texture_transform applied), or empty.
     std::vector<dvec2> uvs;
     // One colour per position (a glTF COLOR_0, linear, each channel in
-    // [0, 1]) multiplying the material's diffuse and ambient colours, or empty.
+    // [0, 1]; a PLY's or OBJ's) multiplying the material's diffuse and
+    // ambient colours, or empty.
     std::vector<dvec3> colors;
+    // One alpha per position (a glTF COLOR_0 VEC4's, in [0, 1]) multiplying a
+    // MASKed material's alpha, or empty (all 1: also when every one is).
+    std::vector<double> alphas;
 };
 
 struct PlacedMesh {

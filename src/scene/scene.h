@@ -60,6 +60,8 @@ struct Scene {
     std::vector<std::array<dvec2, 3>> triangle_uvs;
     // Empty, or one per triangle: its vertices' colours (the same).
     std::vector<std::array<dvec3, 3>> triangle_colors;
+    // Empty, or one per triangle: its vertices' alphas (the same).
+    std::vector<std::array<double, 3>> triangle_alphas;
     std::vector<AmbientLight<double>> ambient_lights;  // at most one
     std::vector<DirectionalLight<double>> directional_lights;
     std::vector<SpotLight<double>> spot_lights;

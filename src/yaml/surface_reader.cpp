@@ -65,7 +65,7 @@ public:
             const MeshData& data = load(m);
             scene_.degenerate_mesh_triangles += data.degenerate_dropped;
             auto mesh = std::make_shared<Mesh>(Mesh{data.positions, data.normals, data.triangles, 0,
-                                                    m.boolean_or("smooth", false), {}, data.colors});
+                                                    m.boolean_or("smooth", false), {}, data.colors, {}});
             scene_.meshes.push_back({e.key, std::move(mesh)});
         }
     }
@@ -181,7 +181,7 @@ private:
     // (and counted) like the file's own.
     Mesh read_mesh(const MapReader& m, int material, const glm::dmat4& to_world, PlacedMesh& placed) {
         const MeshData& data = load(m);
-        Mesh mesh{data.positions, data.normals, data.triangles, material, m.boolean_or("smooth", false), {}, {}};
+        Mesh mesh{data.positions, data.normals, data.triangles, material, m.boolean_or("smooth", false), {}, {}, {}};
         placed = fh::place(mesh, to_world);
         size_t kept = 0;
         for (size_t i = 0; i < mesh.triangles.size(); ++i) {
@@ -207,7 +207,7 @@ private:
         if (added) {
             const MeshData& data = load(m);
             scene_.meshes.push_back({"", std::make_shared<Mesh>(Mesh{data.positions, data.normals, data.triangles, 0,
-                                                                     m.boolean_or("smooth", false), {}, data.colors})});
+                                                                     m.boolean_or("smooth", false), {}, data.colors, {}})});
         }
         return it->second;
     }

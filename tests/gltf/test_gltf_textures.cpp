@@ -857,6 +857,33 @@ TEST(GltfCutouts, AlphaIsTheFactorTimesTheTexelAgainstTheCutoff) {
     }
 }
 
+TEST(GltfCutouts, AVertexAlphaMultipliesTheMaterialsAlpha) {
+    // COLOR_0 white, its alpha 0 at the cut-out quad's left edge (x = -1)
+    // and 1 at its right (x = 1): alpha (x + 1) / 2 across both triangles.
+    // MASK at 0.5: a hole where x < 0 (the green quad behind, lit through
+    // it), red where x > 0 (columns 4-7; column 3 sees x = -0.125, alpha
+    // 0.4375; column 4 x = 0.125, 0.5625). Factor alpha 0.8 and cutoff 0.5:
+    // solid where 0.8 (x + 1) / 2 >= 0.5, x >= 0.25: column 5 (x = 0.375) on.
+    // OPAQUE: red throughout.
+    Quad q{-1, 1, -1, 1, 1, 0};
+    q.colors = {1, 1, 1, 0, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 0};
+    q.color_kind = "VEC4";
+    auto json = [&](const std::string& color, const std::string& mode) {
+        return quads_file({q, {-2, 2, -2, 2, 0, 1}},
+                          surfaces({material(color, "", ", \"alphaMode\": \"" + mode + "\""), material("[0, 1, 0, 1]")}));
+    };
+    for (const Precision p : kPrecisions) {
+        const std::string what = precision_name(p);
+        const Image half = top_view(lit(json("[1, 0, 0, 1]", "MASK")), p);
+        expect_columns(half, 0, 4, kLitGreen, what + ", alpha under 0.5");
+        expect_columns(half, 4, 8, kLitRed, what + ", alpha over 0.5");
+        const Image factor = top_view(lit(json("[1, 0, 0, 0.8]", "MASK")), p);
+        expect_columns(factor, 0, 5, kLitGreen, what + ", 0.8 x alpha under 0.5");
+        expect_columns(factor, 5, 8, kLitRed, what + ", 0.8 x alpha over 0.5");
+        expect_columns(top_view(lit(json("[1, 0, 0, 1]", "OPAQUE")), p), 0, 8, kLitRed, what + ", opaque");
+    }
+}
+
 TEST(GltfCutouts, OpaqueIgnoresAlpha) {
     // alphaMode OPAQUE (and none): factor alpha 0 and texel alpha 0 are
     // still drawn, red.
@@ -1002,12 +1029,17 @@ TEST(GltfVertexColors, ReadAsLinearColoursClampedToOne) {
     expect_vec(b[0], {1, 0, 0.2});
     expect_vec(b[2], {0.4, 0.4, 0.4});
     expect_vec(b[3], {1 / 255.0, 2 / 255.0, 3 / 255.0});
+    // Their alphas kept (one is under 1), for a MASKed material.
+    EXPECT_EQ(f.scene.meshes[0].mesh->alphas, (std::vector<double>{7 / 255.0, 1, 0, 4 / 255.0}));
     // Normalized unsigned shorts: c / 65535.
     q.color_type = kUnsignedShort;
     q.colors = {65535, 0, 0, 0, 0, 65535, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     f = load(quads_file({q}, surfaces({material("[1, 1, 1, 1]")})));
     expect_vec(f.scene.meshes[0].mesh->colors[0], {1, 0, 0});
     expect_vec(f.scene.meshes[0].mesh->colors[1], {0, 65535 / 65535.0, 0});
+    // Alphas all 1 (or a VEC3): none kept.
+    q.colors = {65535, 0, 0, 65535, 0, 0, 65535, 65535, 0, 0, 0, 65535, 0, 0, 0, 65535};
+    EXPECT_TRUE(load(quads_file({q}, surfaces({material("[1, 1, 1, 1]")}))).scene.meshes[0].mesh->alphas.empty());
 }
 
 TEST(GltfVertexColors, WhatTheSpecificationForbidsIsRefused) {
