@@ -62,11 +62,8 @@ public:
         const MapReader names(r_, node, "'meshes'", {});
         for (const MapReader::Entry& e : names.entries()) {
             const MapReader m(r_, e.value, "mesh '" + e.key + "'", {"file", "smooth"});
-            const MeshData& data = load(m);
-            scene_.degenerate_mesh_triangles += data.degenerate_dropped;
-            auto mesh = std::make_shared<Mesh>(Mesh{data.positions, data.normals, data.triangles, 0,
-                                                    m.boolean_or("smooth", false), {}, data.colors, {}});
-            scene_.meshes.push_back({e.key, std::move(mesh)});
+            scene_.degenerate_mesh_triangles += load(m).degenerate_dropped;
+            scene_.meshes.push_back({e.key, scene_mesh(m)});
         }
     }
 
@@ -204,12 +201,16 @@ private:
     int colored_mesh(const MapReader& m) {
         const std::string key = relative(m, "file").string() + (m.boolean_or("smooth", false) ? "|smooth" : "");
         const auto [it, added] = colored_meshes_.try_emplace(key, int(scene_.meshes.size()));
-        if (added) {
-            const MeshData& data = load(m);
-            scene_.meshes.push_back({"", std::make_shared<Mesh>(Mesh{data.positions, data.normals, data.triangles, 0,
-                                                                     m.boolean_or("smooth", false), {}, data.colors, {}})});
-        }
+        if (added) scene_.meshes.push_back({"", scene_mesh(m)});
         return it->second;
+    }
+
+    // A mesh file in its own space, for instances to place (each with its
+    // own material): its file and `smooth` from m.
+    std::shared_ptr<Mesh> scene_mesh(const MapReader& m) {
+        const MeshData& data = load(m);
+        return std::make_shared<Mesh>(Mesh{data.positions, data.normals, data.triangles, 0,
+                                           m.boolean_or("smooth", false), {}, data.colors, {}});
     }
 
     void read_instance(const YAML::Node& node, const Place& place, NamedSurface& named) {
