@@ -88,10 +88,11 @@ int run_info(const Args& args) {
         for (const std::string& a : animations) std::cout << " '" << a << "'";
         size_t skinned = 0, morphed = 0;  // meshes a node deforms (scene/deformation.h)
         for (const Deformation& d : m.scene.deformations) skinned += d.skin.weights != nullptr, morphed += d.targets != nullptr;
-        size_t cutouts = 0;
-        for (const Material<double>& mat : m.scene.materials) cutouts += mat.cutout;
+        size_t cutouts = 0, see_through = 0;
+        for (const Material<double>& mat : m.scene.materials) cutouts += mat.cutout, see_through += mat.blend;
         std::cout << "\nskinned_meshes: " << skinned << "\nmorphed_meshes: " << morphed
-                  << "\ntextures: " << m.scene.textures.size() << "\ncutout_materials: " << cutouts << "\n";
+                  << "\ntextures: " << m.scene.textures.size() << "\ncutout_materials: " << cutouts
+                  << "\nsee_through_materials: " << see_through << "\n";
         print_scene(m.scene, m.settings);
         return 0;
     }

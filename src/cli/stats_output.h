@@ -14,6 +14,7 @@ inline void print_counts(std::ostream& out, const RayCounts& c) {
     out << "rays.primary: " << c.primary << "\n"
         << "rays.shadow: " << c.shadow << "\n"
         << "rays.reflection: " << c.reflection << "\n"
+        << "rays.transmitted: " << c.transmitted << "\n"
         << "rays.total: " << c.total() << "\n"
         << "nonfinite_samples: " << c.nonfinite_samples << "\n";
 }

@@ -33,6 +33,7 @@ public:
     std::size_t values(int index) const;
 
     [[noreturn]] void fail(const std::string& what) const;
+    const std::string& file() const { return file_; }
 
 private:
     const tinygltf::Accessor& accessor(int index, const std::string& what) const;

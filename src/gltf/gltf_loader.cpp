@@ -51,11 +51,10 @@ public:
         for (size_t a = 0; a < m_.animations.size(); ++a) add_animation(int(a), out);
         if (skipped_points_lines_ > 0)
             warn(std::to_string(skipped_points_lines_) + " primitive(s) of points or lines skipped (triangles only)");
-        if (materials.blended > 0)
-            warn(std::to_string(materials.blended) + " material(s) with alphaMode BLEND drawn opaque");
         if (materials.unused_textures > 0)
             warn(std::to_string(materials.unused_textures) +
-                 " normal, occlusion, emissive or metallic-roughness texture(s) not drawn (base colour textures only)");
+                 " texture(s) not drawn (normal and metallic-roughness textures, and emissive or occlusion "
+                 "textures whose coordinates differ from the base colour texture's)");
         out.warnings.insert(out.warnings.begin(), warnings_.begin(), warnings_.end());
         return out;
     }
@@ -276,7 +275,9 @@ std::vector<NodeAnimation> add_gltf(Scene& scene, GltfFile file, const std::stri
     for (size_t m = 0; m < g.materials.size(); ++m) {
         scene.material_names.push_back(name + "/" + g.material_names[m]);
         scene.materials.push_back(g.materials[m]);
-        if (scene.materials.back().texture >= 0) scene.materials.back().texture += textures;
+        for (int* t : {&scene.materials.back().texture, &scene.materials.back().emissive_texture,
+                       &scene.materials.back().occlusion_texture})
+            if (*t >= 0) *t += textures;
     }
     scene.textures.insert(scene.textures.end(), g.textures.begin(), g.textures.end());
     for (SceneMesh& m : g.meshes) scene.meshes.push_back({name + "/" + m.name, std::move(m.mesh)});

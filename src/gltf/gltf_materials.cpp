@@ -4,7 +4,10 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
+#include <utility>
 
+#include "gltf/gltf_texture_coords.h"
 #include "text/input_error.h"
 
 namespace fh {
@@ -48,33 +51,52 @@ class MaterialReader {
 public:
     MaterialReader(const tinygltf::Model& model, const std::string& file) : m_(model), file_(file) {}
 
-    // The base colour texture and alpha mode of material `mat` (the last
-    // of s.materials) onto it (docs/gltf.md, "Textures").
+    // The textures and alpha mode of material `mat` (the last of
+    // s.materials) onto it (docs/gltf.md, "Textures"): its base colour
+    // texture, and its emissive and occlusion textures where they read the
+    // coordinates its meshes carry (gltf/gltf_texture_coords.h).
     void add_surface_of(const tinygltf::Material& mat, const std::string& name, Scene& s) {
         Material<double>& out = s.materials.back();
         const auto& pbr = mat.pbrMetallicRoughness;
-        if (pbr.baseColorTexture.index >= 0) out.texture = texture_of(pbr.baseColorTexture.index, name, s);
-        for (const int t : {pbr.metallicRoughnessTexture.index, mat.normalTexture.index, mat.occlusionTexture.index,
-                            mat.emissiveTexture.index})
-            unused_textures_ += t >= 0;
+        if (pbr.baseColorTexture.index >= 0) out.texture = texture_of(pbr.baseColorTexture.index, name, s, true);
+        // (Transforms parsed here only for these two: a base colour
+        // texture's bad transform is reported with the primitive that reads it.)
+        std::optional<TextureCoords> carried;
+        if (mat.emissiveTexture.index >= 0 || mat.occlusionTexture.index >= 0) carried = carried_coords(mat, file_, name);
+        auto drawn = [&](const auto& info) {
+            const bool same = info.index >= 0 && texture_coords_of(info.texCoord, info.extensions, file_, name) == *carried;
+            unused_textures_ += info.index >= 0 && !same;
+            return same;
+        };
+        if (drawn(mat.emissiveTexture)) out.emissive_texture = texture_of(mat.emissiveTexture.index, name, s, true);
+        if (drawn(mat.occlusionTexture)) {
+            const double strength = mat.occlusionTexture.strength;
+            if (!(strength >= 0 && strength <= 1)) fail(name + ": occlusionTexture's strength must be in [0, 1]");
+            out.occlusion_texture = texture_of(mat.occlusionTexture.index, name, s, false);
+            out.occlusion_strength = strength;
+        }
+        for (const int t : {pbr.metallicRoughnessTexture.index, mat.normalTexture.index}) unused_textures_ += t >= 0;
+        const double alpha = pbr.baseColorFactor.size() == 4 ? std::clamp(pbr.baseColorFactor[3], 0.0, 1.0) : 1.0;
         if (mat.alphaMode == "MASK") {
             out.cutout = true;
-            out.alpha = pbr.baseColorFactor.size() == 4 ? std::clamp(pbr.baseColorFactor[3], 0.0, 1.0) : 1.0;
+            out.alpha = alpha;
             if (!std::isfinite(mat.alphaCutoff) || mat.alphaCutoff < 0) fail(name + ": alphaCutoff must be >= 0");
             out.alpha_cutoff = mat.alphaCutoff;
         } else if (mat.alphaMode == "BLEND") {
-            ++blended_;
+            out.blend = true;
+            out.alpha = alpha;
         } else if (mat.alphaMode != "OPAQUE") {
             fail(name + ": alphaMode '" + mat.alphaMode + "' is not OPAQUE, MASK or BLEND");
         }
     }
 
-    // The scene texture of glTF texture `index`: its image (decoded by
-    // gltf_model.cpp) shared with every texture that shows it, and its
-    // sampler's wrap modes and magnification filter.
-    int texture_of(int index, const std::string& name, Scene& s) {
+    // The scene texture of glTF texture `index`, read as colour (srgb) or
+    // as data: its image (decoded by gltf_model.cpp) shared with every
+    // texture that shows it, and its sampler's wrap modes and magnification
+    // filter.
+    int texture_of(int index, const std::string& name, Scene& s, bool srgb) {
         if (index < 0 || size_t(index) >= m_.textures.size()) fail(name + ": texture " + std::to_string(index) + " does not exist");
-        if (const auto it = textures_.find(index); it != textures_.end()) return it->second;
+        if (const auto it = textures_.find({index, srgb}); it != textures_.end()) return it->second;
         const tinygltf::Texture& t = m_.textures[size_t(index)];
         const std::string what = "texture " + std::to_string(index);
         if (t.source < 0 || size_t(t.source) >= m_.images.size()) fail(what + ": it has no image firsthit can read");
@@ -87,6 +109,7 @@ public:
         }
         Texture out;
         out.image = image;
+        out.srgb = srgb;
         if (t.sampler >= 0) {
             if (size_t(t.sampler) >= m_.samplers.size()) fail(what + ": sampler " + std::to_string(t.sampler) + " does not exist");
             const tinygltf::Sampler& sm = m_.samplers[size_t(t.sampler)];
@@ -103,18 +126,17 @@ public:
                 fail(what + ": magFilter " + std::to_string(sm.magFilter) + " is not glTF's (9728 or 9729)");
         }
         s.textures.push_back(std::move(out));
-        textures_[index] = int(s.textures.size()) - 1;
-        return textures_[index];
+        return textures_[{index, srgb}] = int(s.textures.size()) - 1;
     }
 
-    int blended_ = 0, unused_textures_ = 0;
+    int unused_textures_ = 0;
 
 private:
     [[noreturn]] void fail(const std::string& what) const { throw InputError(file_, what); }
 
     const tinygltf::Model& m_;
     const std::string& file_;
-    std::map<int, int> textures_;  // glTF texture -> Scene::textures
+    std::map<std::pair<int, bool>, int> textures_;  // glTF texture, read as colour -> Scene::textures
     std::map<int, std::shared_ptr<const TextureImage>> images_;  // glTF image, decoded
 };
 
@@ -131,7 +153,6 @@ GltfMaterialsAdded add_gltf_materials(const tinygltf::Model& model, const std::s
     out.default_material = int(s.materials.size());
     s.material_names.push_back("glTF default");
     s.materials.push_back(material_of(tinygltf::Material{}));
-    out.blended = reader.blended_;
     out.unused_textures = reader.unused_textures_;
     return out;
 }

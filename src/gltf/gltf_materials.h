@@ -13,8 +13,7 @@ namespace fh {
 
 struct GltfMaterialsAdded {
     int default_material = 0;  // glTF's default material, for primitives without one
-    int blended = 0;           // materials with alphaMode BLEND (drawn opaque)
-    int unused_textures = 0;   // textures other than base colour (not drawn)
+    int unused_textures = 0;   // textures not drawn (normal, metallic-roughness, others' coordinates)
 };
 
 // Every material of the file, in its order, then glTF's default material,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gltf/gltf_texture_coords.h"
 #include "meshes/mesh_loader.h"
 
 namespace fh {
@@ -52,49 +53,23 @@ public:
         return info.texCoord;
     }
 
-    // The texture coordinates the primitive's base colour texture reads
-    // (TEXCOORD_n, n from the texture or its KHR_texture_transform), moved
-    // by that transform: uv' = translate(offset) rotate(rotation) scale(scale) uv.
-    // Empty when its material has no such texture.
+    // The texture coordinates the primitive's material reads
+    // (gltf/gltf_texture_coords.h: its base colour texture's, else its
+    // emissive or occlusion texture's), moved by that texture's transform.
+    // Empty when its material has none of those textures.
     std::vector<dvec2> read_uvs(const tinygltf::Primitive& prim, const std::string& what) const {
         if (prim.material < 0 || size_t(prim.material) >= m_.materials.size()) return {};
-        const tinygltf::TextureInfo& info = m_.materials[size_t(prim.material)].pbrMetallicRoughness.baseColorTexture;
-        if (info.index < 0) return {};
-        int set = info.texCoord;
-        dvec2 offset(0), scale(1);
-        double rotation = 0;
-        if (const auto it = info.extensions.find("KHR_texture_transform"); it != info.extensions.end()) {
-            const tinygltf::Value& x = it->second;
-            auto pair = [&](const char* key, dvec2& into) {
-                if (!x.Has(key)) return;
-                const tinygltf::Value& v = x.Get(key);
-                if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
-                    fail(what + ": KHR_texture_transform's " + key + " needs 2 numbers");
-                into = {v.Get(0).GetNumberAsDouble(), v.Get(1).GetNumberAsDouble()};
-            };
-            pair("offset", offset);
-            pair("scale", scale);
-            if (x.Has("rotation")) {
-                if (!x.Get("rotation").IsNumber()) fail(what + ": KHR_texture_transform's rotation is not a number");
-                rotation = x.Get("rotation").GetNumberAsDouble();
-            }
-            if (x.Has("texCoord")) {
-                if (!x.Get("texCoord").IsInt() || x.Get("texCoord").GetNumberAsInt() < 0)
-                    fail(what + ": KHR_texture_transform's texCoord is not a set index");
-                set = x.Get("texCoord").GetNumberAsInt();
-            }
-            if (!std::isfinite(offset.x + offset.y + scale.x + scale.y + rotation))
-                fail(what + ": KHR_texture_transform's numbers are not finite");
-        }
+        const std::optional<TextureCoords> coords =
+            carried_coords(m_.materials[size_t(prim.material)], read_.file(), what);
+        if (!coords) return {};
+        const int set = coords->set;
         const auto attribute = prim.attributes.find("TEXCOORD_" + std::to_string(set));
         if (attribute == prim.attributes.end())
             fail(what + ": its material reads TEXCOORD_" + std::to_string(set) + ", which it does not have");
         const std::vector<double> t = read_.numbers(attribute->second, 2, what + " TEXCOORD_" + std::to_string(set));
-        const double c = std::cos(rotation), sn = std::sin(rotation);
         std::vector<dvec2> uvs(t.size() / 2);
         for (size_t i = 0; i < uvs.size(); ++i) {
-            const double u = scale.x * t[2 * i], v = scale.y * t[2 * i + 1];
-            uvs[i] = {c * u + sn * v + offset.x, -sn * u + c * v + offset.y};
+            uvs[i] = coords->moved({t[2 * i], t[2 * i + 1]});
             if (!std::isfinite(uvs[i].x) || !std::isfinite(uvs[i].y))
                 fail(what + ": KHR_texture_transform takes TEXCOORD_" + std::to_string(set) + " " +
                      std::to_string(i) + " past a double's range");

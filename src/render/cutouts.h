@@ -1,5 +1,6 @@
-// Cutouts (glTF's alphaMode MASK): a surface that is there only where its
-// alpha reaches the cutoff -- a leaf's outline on a quad. A ray that meets
+// Cutouts (glTF's alphaMode MASK, and BLEND for shadow rays): a surface
+// that is there only where its alpha reaches the cutoff -- a leaf's outline
+// on a quad. A ray that meets
 // a hole goes on through it to the next surface, so camera rays see what is
 // behind and shadow rays let light through: a leaf casts a leaf's shadow.
 //
@@ -21,11 +22,33 @@ inline constexpr int kMaxCutoutLayers = 64;
 
 // Where a material's surface is: alpha times its texture's alpha (when it
 // has one) times the mesh's vertex alpha (when it has them) at least cutoff.
+// A BLEND material (blend) is see-through instead, alpha its opacity, for
+// camera and reflection rays (render/shading.h); for shadow rays it is a
+// cutout at 0.5.
 struct Cutout {
     Texture texture;  // image null: alpha alone
     float alpha = 1;
     float cutoff = 0.5f;
+    bool blend = false;
 };
+
+// Per lane: the surface's alpha at the points p of triangle prim (in the
+// mesh's space).
+template <typename T>
+FH_HOT_INLINE Lanes<T> alpha_at(const FlatGeometry<T>& mesh, const Cutout& cut, int prim, const Vec3Lanes<T>& p) {
+    Lanes<T> alpha = splat(T(cut.alpha));
+    const bool texels = cut.texture.image && !mesh.uvs.empty();
+    if (!texels && mesh.alphas.empty()) return alpha;
+    Lanes<T> b1, b2;
+    mesh.weights_at(prim, p, b1, b2);
+    if (texels) {
+        Lanes<T> u, v;
+        mesh.uv_at(prim, b1, b2, u, v);
+        alpha = alpha * cut.texture.sample<T>(u, v).a;
+    }
+    if (!mesh.alphas.empty()) alpha = alpha * mesh.alpha_at(prim, b1, b2);
+    return alpha;
+}
 
 // Per lane: whether the surface is there at the points p of the active
 // lanes' triangles prim (in the mesh's space), one triangle at a time.
@@ -39,16 +62,7 @@ FH_HOT_INLINE LaneInts<T> solid_at(const FlatGeometry<T>& mesh, const Cutout& cu
         int first = 0;
         while (!active[first]) ++first;
         const LaneInts<T> same = active & (prim == prim[first]);
-        Lanes<T> b1, b2;
-        mesh.weights_at(int(prim[first]), p, b1, b2);
-        Lanes<T> alpha = splat(T(cut.alpha));
-        if (texels) {
-            Lanes<T> u, v;
-            mesh.uv_at(int(prim[first]), b1, b2, u, v);
-            alpha = alpha * cut.texture.sample<T>(u, v).a;
-        }
-        if (!mesh.alphas.empty()) alpha = alpha * mesh.alpha_at(int(prim[first]), b1, b2);
-        solid |= same & (alpha >= T(cut.cutoff));
+        solid |= same & (alpha_at(mesh, cut, int(prim[first]), p) >= T(cut.cutoff));
         active &= ~same;
     }
     return solid;

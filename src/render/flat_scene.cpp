@@ -49,18 +49,25 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
     // Materials on meshes with vertex colours are shaded as textured ones:
     // the colours multiply ambient and diffuse, not emissive.
     std::vector<bool> coloured(scene.materials.size(), false);
-    for (const Instance& i : scene.instances)
+    for (const Instance& i : scene.instances) {
         if (!scene.meshes[size_t(i.mesh)].mesh->colors.empty()) coloured[size_t(i.material)] = true;
+        f.blended |= scene.materials[size_t(i.material)].blend;
+    }
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const Material<double>& mat = scene.materials[m];
-        const bool textured = (mat.texture >= 0 || coloured[m]) && (fx.ambient || fx.diffuse);
+        // (An emissive texture shows lit or not.)
+        const bool textured =
+            ((mat.texture >= 0 || mat.occlusion_texture >= 0 || coloured[m]) && (fx.ambient || fx.diffuse)) ||
+            mat.emissive_texture >= 0;
         const dvec3 term = ambient[m];
         // (Added only when there is some: bytes as before for the report's.)
         if (mat.emissive != dvec3(0)) ambient[m] += mat.emissive;
         const int whole = whole_exponent(mat.phong_exponent);
         f.shading.push_back({Color<T>(ambient[m]), mat.glazed, T(mat.reflectivity), T(mat.phong_exponent),
                              whole >= 0, textured ? mat.texture : -1, textured ? Color<T>(term) : Color<T>(0),
-                             textured ? Color<T>(mat.emissive) : Color<T>(0)});
+                             textured ? Color<T>(mat.emissive) : Color<T>(0),
+                             textured ? mat.emissive_texture : -1, textured ? mat.occlusion_texture : -1,
+                             T(mat.occlusion_strength)});
         f.textured |= textured;
         f.fractional_exponents |= whole < 0 && fx.specular;
         if (whole > 0) f.exponent_bits = std::max(f.exponent_bits, int(std::bit_width(unsigned(whole))));

@@ -31,6 +31,12 @@ struct MaterialShading {
     int texture = -1;
     Color<T> tinted_ambient{0};
     Color<T> emissive{0};
+    // Its emissive texture multiplies `emissive`; its occlusion texture's
+    // red channel R the tinted ambient term, by 1 + occlusion_strength (R - 1)
+    // (FlatScene::textures; -1: none).
+    int emissive_texture = -1;
+    int occlusion_texture = -1;
+    T occlusion_strength = 1;
 };
 
 // intensity * strength * (light colour (.) material colour), for one light and
@@ -56,6 +62,7 @@ struct FlatScene {
     std::vector<LightTerms<T>> spot_terms;
     std::vector<Texture> textures;  // Scene::textures, when some material is textured
     bool textured = false;          // some material is (instances only: glTF's)
+    bool blended = false;           // some instance's material is see-through (glTF's BLEND)
     bool fractional_exponents = false;  // some material has whole == false: std::pow needed
     int exponent_bits = 0;              // bits of the largest whole exponent
     EffectPlan plan;

@@ -71,16 +71,16 @@ FlatInstance<T> flat_instance(const Instance& i, int cutout) {
 }
 
 // The scene's instances in T, each with its index into set.cutouts (filled
-// here: one a MASKed material).
+// here: one a MASKed or BLENDed material).
 template <typename T>
 void flatten_instances(const Scene& scene, InstanceSet<T>& set) {
     std::vector<int> cutout_of(scene.materials.size(), -1);
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const Material<double>& mat = scene.materials[m];
-        if (!mat.cutout) continue;
+        if (!mat.cutout && !mat.blend) continue;
         cutout_of[m] = int(set.cutouts.size());
         set.cutouts.push_back({mat.texture >= 0 ? scene.textures[size_t(mat.texture)] : Texture{}, float(mat.alpha),
-                               float(mat.alpha_cutoff)});
+                               mat.blend ? 0.5f : float(mat.alpha_cutoff), mat.blend});
     }
     set.instances.reserve(scene.instances.size());
     for (const Instance& i : scene.instances) set.instances.push_back(flat_instance<T>(i, cutout_of[size_t(i.material)]));

@@ -44,7 +44,7 @@ struct FlatInstance {
     AffineMap<T> normal_to_world;  // the inverse transpose of to_world's linear part (offset 0)
     int mesh = 0;
     int material = 0;
-    int cutout = -1;  // into InstanceSet::cutouts: its material is MASKed; -1: solid
+    int cutout = -1;  // into InstanceSet::cutouts: its material is MASKed or BLENDed; -1: solid
 
     // The rays of a packet in the mesh's space, with unit directions, and
     // each ray's scale (object distance per world distance).
@@ -63,7 +63,7 @@ struct InstanceSet {
     std::vector<Aabb> mesh_boxes;  // by Scene::meshes, in the mesh's space
     BigArray<FlatInstance<T>> instances;
     std::vector<Aabb> instance_boxes;  // by instance, in world space (the top BVH's input)
-    std::vector<Cutout> cutouts;  // the MASKed materials' (render/cutouts.h)
+    std::vector<Cutout> cutouts;  // the MASKed and BLENDed materials' (render/cutouts.h)
     Bvh bvh;  // over the instances' world boxes (a leaf: one instance)
     BigArray<WalkNode<T>> walk_nodes;
     std::vector<std::int32_t> walk_from;  // each walk node's BVH node (walk_nodes_of)

@@ -70,7 +70,8 @@ FH_HOT_INLINE LaneInts<T> closest_instance_hits(const InstanceSet<T>& set, const
             HitLanes<T> m = count(entering) <= kAlone<T> && !mesh.wide.empty()
                                 ? hits_one_by_one(mesh, local, entering, limit)
                                 : closest_hits_within(mesh, local, entering, limit);
-            if (instance.cutout >= 0)
+            // (A BLENDed surface is hit, and seen through by the shader.)
+            if (instance.cutout >= 0 && !set.cutouts[size_t(instance.cutout)].blend)
                 m = past_cutouts(mesh, set.cutouts[size_t(instance.cutout)], local, entering, limit, m);
             const Lanes<T> t = m.t / scale;
             const LaneInts<T> tie = (t == h.t) & ((on > i) | ((on == i) & (h.prim > m.prim)));

@@ -5,6 +5,8 @@
 //        Lambert diffuse and Blinn-Phong specular (specular only where n.l > 0)
 //   6. glazing: + reflectivity * colour of the mirrored ray, lit or not,
 //      up to max_depth reflection rays in a chain.
+//   (glTF's BLEND, instances only: a see-through hit's colour counts by its
+//   opacity a, the ray going on past it by 1 - a: go_on.)
 // Colours stay unclamped here; the pixel clamps (render/tile_renderer.h).
 //
 // A packet of rays goes through these steps together, each step one SIMD
@@ -64,6 +66,7 @@ public:
         const ColorLanes<T> black{zero, zero, zero};
         ColorLanes<T> colour = black;
         Lanes<T> weight = splat(T(1));
+        LaneInts<T> layers{};  // see-through surfaces each ray has gone through (go_on)
         for (int depth = 0;; ++depth) {
             LaneInts<T> instance;  // each lane's instance, or kNoInstance (kInstances only)
             const HitLanes<T> h = hits(ray, active, depth == 0 ? first_hits : nullptr, instance);
@@ -77,6 +80,12 @@ public:
             if constexpr (kInstances) instanced_surfaces(ray, h, instance, hit, surface, local);
             else surfaces(ray, h, hit, surface, local);
             add_lights(ray, surface, hit, local, counts);
+            if constexpr (kInstances) {
+                if (scene_.blended) {
+                    if (!go_on(ray, active, weight, colour, local, surface, hit, depth, layers, counts)) break;
+                    continue;
+                }
+            }
             colour += weight * local;
             if constexpr (!kReflections) break;
             if (depth >= scene_.plan.max_depth) break;
@@ -109,7 +118,44 @@ private:
         LaneInts<T> glazed;
         LaneInts<T> material;
         ColorLanes<T> albedo;  // a textured scene's texel colours (1: none); else unused
+        // A scene with see-through surfaces (FlatScene::blended): each hit's
+        // opacity (1: opaque), and where a ray going on past it starts.
+        Lanes<T> opacity;
+        Vec3Lanes<T> beyond;
     };
+
+    // A see-through ray goes on past this many surfaces at most; the last
+    // counts as opaque (a bound on one ray's work, as kMaxCutoutLayers).
+    static constexpr int kMaxSeeThroughLayers = 64;
+
+    // In a scene with see-through surfaces (glTF's BLEND): each hit's own
+    // colour counts by its opacity a, and a ray whose surface lets light
+    // through (a < 1) goes on straight past it with weight (1 - a); a
+    // glazed, opaque surface sends its reflection ray as in trace. Each lane
+    // does one or the other, so a chain stays a loop. Returns whether any
+    // lane goes on.
+    FH_HOT_INLINE bool go_on(RayPacket<T>& ray, LaneInts<T>& active, Lanes<T>& weight, ColorLanes<T>& colour,
+                             const ColorLanes<T>& local, const SurfaceLanes& s, const LaneInts<T>& hit, int depth,
+                             LaneInts<T>& layers, RayCounts& counts) const {
+        using Int = typename LaneTypes<T>::Int;
+        const Lanes<T> one = splat(T(1));
+        const Lanes<T> opacity = select(hit & (layers < Int(kMaxSeeThroughLayers)), s.opacity, one);
+        colour += (weight * opacity) * local;
+        const LaneInts<T> through = hit & (opacity < T(1));
+        LaneInts<T> mirrored{};
+        // A lane's reflections so far: its steps less its layers.
+        if constexpr (kReflections)
+            mirrored = hit & s.glazed & ~through & ((LaneInts<T>{} + Int(depth)) - layers < Int(scene_.plan.max_depth));
+        if (none(through | mirrored)) return false;
+        counts.transmitted += std::uint64_t(count(through));
+        counts.reflection += std::uint64_t(count(mirrored));
+        weight = select(through, weight * (one - opacity), weight * s.reflectivity);
+        const Vec3Lanes<T>& d = ray.direction;
+        ray = {select(through, s.beyond, s.origin), select(through, d, d - (T(2) * dot(d, s.normal)) * s.normal)};
+        layers = select(through, layers + Int(1), layers);
+        active = through | mirrored;
+        return true;
+    }
 
     // Calls fn(id, lanes, first) for each distinct id among the lanes in
     // mask, with the lanes that hold it. first is std::true_type for the
@@ -182,6 +228,8 @@ private:
         const LaneInts<T> flip = dot(geometric, ray.direction) > T(0);
         s.normal = select(flip, -s.normal, s.normal);
         s.origin = offset_origin(s.point, select(flip, -geometric, geometric));
+        if constexpr (kInstances)
+            if (scene_.blended) s.beyond = offset_origin(s.point, select(flip, geometric, -geometric));
     }
 
     // The nearest hits on both levels, or on the world's alone.
@@ -214,6 +262,7 @@ private:
                 const int material = geometry_.surfaces[size_t(prim)].material;
                 put_hit(point, normal, shading, material, lanes, first, s, geometric, ambient);
                 if (scene_.textured) untextured(lanes, first, s);
+                if (scene_.blended) put(s.opacity, splat(T(1)), lanes, first);
                 return;
             }
             const FlatInstance<T>& inst = instances_->instances[size_t(in)];
@@ -226,31 +275,38 @@ private:
             shading = smooth ? normalize(inst.normal_to_world.vector(shading)) : normal;
             put_hit(point, normal, shading, inst.material, lanes, first, s, geometric, ambient);
             if (scene_.textured) textured(mesh, prim, object_point, inst.material, lanes, first, s, ambient);
+            if (scene_.blended) {
+                const Cutout* cut = inst.cutout >= 0 ? &instances_->cutouts[size_t(inst.cutout)] : nullptr;
+                put(s.opacity, cut && cut->blend ? alpha_at(mesh, *cut, prim, object_point) : splat(T(1)), lanes,
+                    first);
+            }
         });
         finish_surfaces(ray, hit, geometric, ambient, s, local);
     }
 
     // A textured material's texel colours at an instance's points (in its
     // mesh's space), times the mesh's vertex colours where it has them,
-    // into s.albedo, and its ambient term times them (plus its emissive
-    // colour) into ambient; neither: albedo 1. One texel sample per hit, no
-    // allocation.
+    // into s.albedo, and its ambient term times them -- and times its
+    // occlusion, plus its emissive colour times the emissive texel -- into
+    // ambient; none of these: albedo 1. One sample of each texture per hit,
+    // no allocation.
     template <typename First>
     FH_HOT_INLINE void textured(const FlatGeometry<T>& mesh, int prim, const Vec3Lanes<T>& point, int material,
                                 const LaneInts<T>& lanes, First first, SurfaceLanes& s, ColorLanes<T>& ambient) const {
         const MaterialShading<T>& m = scene_.shading[size_t(material)];
-        const bool texel = m.texture >= 0 && !mesh.uvs.empty();
-        if (!texel && mesh.colors.empty()) {
+        const bool uvs = !mesh.uvs.empty();
+        const bool texel = m.texture >= 0 && uvs, glow = m.emissive_texture >= 0 && uvs,
+                   occluded = m.occlusion_texture >= 0 && uvs;
+        if (!texel && !glow && !occluded && mesh.colors.empty()) {
             untextured(lanes, first, s);
             return;
         }
         const Lanes<T> one = splat(T(1));
         ColorLanes<T> albedo{one, one, one};
-        Lanes<T> b1, b2;
+        Lanes<T> b1, b2, u{}, v{};  // u, v: read only where some texture is
         mesh.weights_at(prim, point, b1, b2);
+        if (texel || glow || occluded) mesh.uv_at(prim, b1, b2, u, v);
         if (texel) {
-            Lanes<T> u, v;
-            mesh.uv_at(prim, b1, b2, u, v);
             const TexelLanes<T> c = scene_.textures[size_t(m.texture)].template sample<T>(u, v);
             albedo = {c.r, c.g, c.b};
         }
@@ -259,10 +315,19 @@ private:
             albedo = {albedo.x * c.x, albedo.y * c.y, albedo.z * c.z};
         }
         put(s.albedo, albedo, lanes, first);
-        put(ambient,
-            ColorLanes<T>{albedo.x * m.tinted_ambient.x, albedo.y * m.tinted_ambient.y, albedo.z * m.tinted_ambient.z} +
-                m.emissive,
-            lanes, first);
+        ColorLanes<T> tinted{albedo.x * m.tinted_ambient.x, albedo.y * m.tinted_ambient.y,
+                             albedo.z * m.tinted_ambient.z};
+        if (occluded) {
+            const Lanes<T> r = scene_.textures[size_t(m.occlusion_texture)].template sample<T>(u, v).r;
+            const Lanes<T> factor = T(1) + m.occlusion_strength * (r - T(1));
+            tinted = {tinted.x * factor, tinted.y * factor, tinted.z * factor};
+        }
+        if (glow) {
+            const TexelLanes<T> c = scene_.textures[size_t(m.emissive_texture)].template sample<T>(u, v);
+            put(ambient, tinted + ColorLanes<T>{c.r * m.emissive.x, c.g * m.emissive.y, c.b * m.emissive.z}, lanes, first);
+        } else {
+            put(ambient, tinted + m.emissive, lanes, first);
+        }
     }
 
     // In a textured scene, a surface with neither texels nor vertex colours

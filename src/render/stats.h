@@ -12,14 +12,16 @@ struct RayCounts {
     std::uint64_t primary = 0;
     std::uint64_t shadow = 0;
     std::uint64_t reflection = 0;
+    std::uint64_t transmitted = 0;  // on through see-through surfaces (glTF's BLEND)
     std::uint64_t nonfinite_samples = 0;  // NaN or infinite before clamping; should stay 0
 
-    std::uint64_t total() const { return primary + shadow + reflection; }
+    std::uint64_t total() const { return primary + shadow + reflection + transmitted; }
 
     RayCounts& operator+=(const RayCounts& o) {
         primary += o.primary;
         shadow += o.shadow;
         reflection += o.reflection;
+        transmitted += o.transmitted;
         nonfinite_samples += o.nonfinite_samples;
         return *this;
     }

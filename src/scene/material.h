@@ -25,12 +25,23 @@ struct Material {
     // A glTF material's base colour texture (into Scene::textures; -1:
     // none): its colour multiplies the ambient and diffuse colours per hit.
     int texture = -1;
+    // Its emissive texture: its colour multiplies `emissive` per hit.
+    int emissive_texture = -1;
+    // Its occlusion texture (read linear, red channel R): the ambient term
+    // is multiplied by 1 + occlusion_strength (R - 1) per hit.
+    int occlusion_texture = -1;
+    T occlusion_strength = 1;
     // glTF's alphaMode MASK: the surface is there only where its alpha --
     // `alpha` times the texture's -- is at least alpha_cutoff; elsewhere
     // camera and shadow rays pass through it.
     bool cutout = false;
     T alpha = 1;
     T alpha_cutoff = T(0.5);
+    // glTF's alphaMode BLEND: the surface is see-through, its alpha (as
+    // above) the share of its own colour in what a camera or reflection
+    // ray brings back, the rest from behind it; shadow rays treat it as a
+    // cutout at alpha 0.5.
+    bool blend = false;
 };
 
 // The exponent as a whole number, so shading can use repeated squaring; -1

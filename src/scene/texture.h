@@ -1,14 +1,16 @@
-// A colour texture (glTF's baseColorTexture): an image of 8-bit RGBA texels
-// and how a point of it is read -- the sampler's wrap mode per axis and its
-// filter. Texture coordinates (u, v) run over the image from its top-left
-// corner: u = 1 is one image width to the right, v = 1 one height down.
+// A texture (glTF's base colour, emissive or occlusion texture): an image
+// of 8-bit RGBA texels and how a point of it is read -- the sampler's wrap
+// mode per axis and its filter. Texture coordinates (u, v) run over the
+// image from its top-left corner: u = 1 is one image width to the right,
+// v = 1 one height down.
 //
-// Texels hold sRGB-encoded colour and linear alpha, as glTF stores them;
-// a read returns linear colour (the spec's transfer function, inverted by
-// a 256-entry table) and alpha, in [0, 1]. Bilinear filtering blends the
-// four nearest texel centres in linear colour. There are no mipmaps: a
-// texture seen from far away is read at one point per ray, as a pixel's
-// sample (docs/gltf.md, "Textures").
+// Colour texels hold sRGB-encoded colour and linear alpha, as glTF stores
+// them; a read returns linear colour (the spec's transfer function, inverted
+// by a 256-entry table) and alpha, in [0, 1]. Data texels (occlusion) are
+// linear throughout. Bilinear filtering blends the four nearest texel
+// centres in linear values. There are no mipmaps: a texture seen from far
+// away is read at one point per ray, as a pixel's sample (docs/gltf.md,
+// "Textures").
 #pragma once
 
 #include <array>
@@ -98,6 +100,9 @@ struct Texture {
     std::shared_ptr<const TextureImage> image;
     Wrap wrap_s = Wrap::repeat, wrap_t = Wrap::repeat;  // along u, along v
     Filter filter = Filter::bilinear;
+    // Colour texels are sRGB-encoded (base colour, emissive); data texels
+    // (occlusion) are read as they are, n / 255.
+    bool srgb = true;
 
     // Linear colour and alpha at each lane's (u, v). Coordinates turn into
     // texels in T, all lanes at once; then each lane reads its texels.
@@ -135,12 +140,22 @@ private:
     FH_HOT_INLINE TexelLanes<T> read(const LaneInts<T>& index) const {
         const std::uint8_t* rgba = image->rgba.data();
         alignas(sizeof(Lanes<T>)) T r[kLanes<T>], g[kLanes<T>], b[kLanes<T>], a[kLanes<T>];
-        for (int k = 0; k < kLanes<T>; ++k) {
-            const std::uint8_t* p = rgba + 4 * size_t(index[k]);
-            r[k] = T(kSrgbToLinear[p[0]]);
-            g[k] = T(kSrgbToLinear[p[1]]);
-            b[k] = T(kSrgbToLinear[p[2]]);
-            a[k] = T(p[3]) * T(1.0 / 255);
+        if (srgb) {
+            for (int k = 0; k < kLanes<T>; ++k) {
+                const std::uint8_t* p = rgba + 4 * size_t(index[k]);
+                r[k] = T(kSrgbToLinear[p[0]]);
+                g[k] = T(kSrgbToLinear[p[1]]);
+                b[k] = T(kSrgbToLinear[p[2]]);
+                a[k] = T(p[3]) * T(1.0 / 255);
+            }
+        } else {
+            for (int k = 0; k < kLanes<T>; ++k) {
+                const std::uint8_t* p = rgba + 4 * size_t(index[k]);
+                r[k] = T(p[0]) * T(1.0 / 255);
+                g[k] = T(p[1]) * T(1.0 / 255);
+                b[k] = T(p[2]) * T(1.0 / 255);
+                a[k] = T(p[3]) * T(1.0 / 255);
+            }
         }
         return {load(r), load(g), load(b), load(a)};
     }

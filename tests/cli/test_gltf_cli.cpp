@@ -261,10 +261,11 @@ TEST(GltfCli, ExportOfDebiansSkinByHand) {
 }
 
 // The demo's floor tiles and trellis: two textures, one of them cutting the
-// trellis out.
-TEST(GltfCli, InfoCountsTexturesAndCutouts) {
+// trellis out; and its glass pane, see-through.
+TEST(GltfCli, InfoCountsTexturesCutoutsAndSeeThroughMaterials) {
     const auto info = run_firsthit("info " + source_path("animations/gltf/demo.gltf"));
-    EXPECT_NE(info.out.find("\ntextures: 2\ncutout_materials: 1\n"), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find("\ntextures: 2\ncutout_materials: 1\nsee_through_materials: 1\n"), std::string::npos)
+        << info.out;
 }
 
 // Debian's AnimatedMorphCube.gltf at frame 60 (2 s, its key 60): weights
