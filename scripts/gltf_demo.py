@@ -8,7 +8,8 @@ camera on a node, a directional, a point and a spot light
 (KHR_lights_punctual), a floor of textured tiles (a PNG repeated,
 KHR_texture_transform) and a trellis whose bars are a cutout (alphaMode
 MASK): the floor shows through its holes, and the sun throws the grid's
-shadow. One .gltf file, its buffer and images in data: URIs; glTF is y-up.
+shadow; a pane of blue glass (alphaMode BLEND) before the blob. One .gltf
+file, its buffer and images in data: URIs; glTF is y-up.
 
     python3 scripts/gltf_demo.py OUT.gltf
 """
@@ -203,6 +204,8 @@ def main(out):
         {"name": "blob", "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.75, 0.6, 1], "metallicFactor": 0, "roughnessFactor": 0.3}},
         {"name": "trellis", "alphaMode": "MASK", "alphaCutoff": 0.5, "doubleSided": True,
          "pbrMetallicRoughness": {"baseColorTexture": {"index": 1}, "metallicFactor": 0, "roughnessFactor": 0.9}},
+        {"name": "glass", "alphaMode": "BLEND", "doubleSided": True,
+         "pbrMetallicRoughness": {"baseColorFactor": [0.3, 0.6, 1, 0.4], "metallicFactor": 0, "roughnessFactor": 0.1}},
     ]
     # The floor's tiles: 64 x 64 texels repeated, a tile a unit (a texture
     # transform scales the floor's coordinates, 1 a unit, by 0.25).
@@ -242,6 +245,14 @@ def main(out):
     pos, nrm, idx, uv = quad(2.4, 2.4)
     meshes.append(b.mesh((pos, nrm, idx), 8, {"TEXCOORD_0": b.accessor(uv, "VEC2")}))
     nodes.append({"name": "trellis", "mesh": len(meshes) - 1, "translation": [3.6, 1.9, 2.6]})
+    scene_nodes.append(len(nodes) - 1)
+
+    # A pane of blue glass (alphaMode BLEND, alpha 0.4: see-through, and
+    # too clear to cast a shadow) standing on the floor before the blob.
+    pos, nrm, idx, uv = quad(2.0, 1.6)
+    meshes.append(b.mesh((pos, nrm, idx), 9))
+    nodes.append({"name": "glass", "mesh": len(meshes) - 1, "translation": [-4.6, 0.8, -0.9],
+                  "rotation": quat_axis_angle([1, 0, 0], math.pi / 2)})
     scene_nodes.append(len(nodes) - 1)
 
     # A skin: a tube 2.4 tall standing at (5, 0, -2), its joints at heights
