@@ -18,21 +18,38 @@ namespace {
 // million: export its one bunny instead.
 constexpr size_t kMaxExportTriangles = 20'000'000;
 
-// Every triangle the scene shows, in the world: its own, then each instance's.
-std::vector<WorldTriangle> world_triangles(const Scene& scene, const std::string& file) {
+// Every triangle the scene shows, in the world: its own, then each
+// instance's; and, when some instance's mesh has vertex colours, each
+// vertex's colour (white where its mesh has none).
+struct WorldMesh {
+    std::vector<WorldTriangle> triangles, colors;
+};
+WorldMesh world_triangles(const Scene& scene, const std::string& file) {
     size_t total = scene.triangles.size();
     for (const Instance& i : scene.instances) total += scene.meshes[size_t(i.mesh)].mesh->triangles.size();
     if (total > kMaxExportTriangles)
         throw InputError(file, "shows " + std::to_string(total) + " triangles with its instances; export writes at "
                                "most " + std::to_string(kMaxExportTriangles));
-    std::vector<WorldTriangle> out;
-    out.reserve(total);
-    for (const Triangle<double>& t : scene.triangles)
-        if (!t.degenerate()) out.push_back({t.v0, t.v1, t.v2});
+    bool coloured = false;
+    for (const Instance& i : scene.instances) coloured |= !scene.meshes[size_t(i.mesh)].mesh->colors.empty();
+    WorldMesh out;
+    out.triangles.reserve(total);
+    if (coloured) out.colors.reserve(total);
+    const WorldTriangle white{dvec3(1), dvec3(1), dvec3(1)};
+    for (const Triangle<double>& t : scene.triangles) {
+        if (t.degenerate()) continue;
+        out.triangles.push_back({t.v0, t.v1, t.v2});
+        if (coloured) out.colors.push_back(white);
+    }
     for (const Instance& i : scene.instances) {
         const Mesh& mesh = *scene.meshes[size_t(i.mesh)].mesh;
         auto placed = [&](std::uint32_t v) { return dvec3(i.to_world * glm::dvec4(mesh.positions[v], 1.0)); };
-        for (const auto& t : mesh.triangles) out.push_back({placed(t[0]), placed(t[1]), placed(t[2])});
+        for (const auto& t : mesh.triangles) {
+            out.triangles.push_back({placed(t[0]), placed(t[1]), placed(t[2])});
+            if (!coloured) continue;
+            out.colors.push_back(mesh.colors.empty() ? white
+                                                     : WorldTriangle{mesh.colors[t[0]], mesh.colors[t[1]], mesh.colors[t[2]]});
+        }
     }
     return out;
 }
@@ -46,8 +63,9 @@ int run_export(const Args& args) {
     check_output_file(*out);
     const Job job = job_from_args(args);
     const Scene& scene = job.scene();
-    const std::vector<WorldTriangle> triangles = world_triangles(scene, job.file);
-    write_mesh(*out, triangles);
+    const WorldMesh world = world_triangles(scene, job.file);
+    const std::vector<WorldTriangle>& triangles = world.triangles;
+    write_mesh(*out, triangles, world.colors);
     if (!args.has("--quiet")) {
         if (!scene.spheres().empty() || !scene.planes.empty() || !scene.shapes.of<Disk>().empty())
             std::cerr << job.file << ": warning: spheres, disks and planes are not triangles: left out\n";

@@ -5,6 +5,7 @@
 // cameras by name or index, and each mistake is one line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -12,6 +13,7 @@
 #include "cli/run_command.h"
 #include "core/vec.h"
 #include "gltf/gltf_builder.h"
+#include "meshes/mesh_loader.h"
 #include "support/png_read.h"
 
 namespace fh::test {
@@ -103,6 +105,61 @@ TEST(GltfCli, ExportOfAYamlSceneHoldingTheFile) {
     write_yaml_scene(dir, "view_point: [0, -20, 5], look_at: [0, 1, 0]",
                      "{type: gltf, name: model, file: model.gltf, transform: {translate: [10, 0, 0]}}");
     expect_near(exported((dir / "scene.yaml").string(), dir), {{12, -6, 4}, {14, -6, 4}, {12, -6, 6}});
+}
+
+// Vertex colours are written where a mesh has them: a coloured OBJ placed
+// at x + 10 (a `type: mesh` with colours is an instance) beside an
+// uncoloured one (the world's own triangles, white). OBJ keeps the values;
+// PLY writes bytes, round(255 c): 0.5 -> 128, 0.25 -> 64. A scene without
+// colours writes plain vertices.
+TEST(GltfCli, ExportWritesVertexColoursWhereAMeshHasThem) {
+    const fs::path dir = fresh_dir("export_colours");
+    std::ofstream(dir / "colored.obj") << "v 0 0 0 1 0 0\nv 1 0 0 0 0.5 0\nv 0 1 0 0 0 0.25\nf 1 2 3\n";
+    std::ofstream(dir / "plain.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    write_yaml_scene(dir, "view_point: [0, -20, 5], look_at: [0, 1, 0]",
+                     "{type: mesh, file: plain.obj, material: grey}\n"
+                     "  - {type: mesh, file: colored.obj, material: grey, transform: {translate: [10, 0, 0]}}");
+    const std::vector<std::pair<dvec3, dvec3>> want = {
+        {{0, 0, 0}, {1, 1, 1}},  {{1, 0, 0}, {1, 1, 1}},    {{0, 1, 0}, {1, 1, 1}},
+        {{10, 0, 0}, {1, 0, 0}}, {{11, 0, 0}, {0, 0.5, 0}}, {{10, 1, 0}, {0, 0, 0.25}}};
+
+    const auto obj = run_firsthit("export " + (dir / "scene.yaml").string() + " --quiet -o " + (dir / "out.obj").string());
+    ASSERT_EQ(obj.status, 0) << obj.err;
+    std::vector<std::pair<dvec3, dvec3>> got;
+    std::ifstream in(dir / "out.obj");
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream words(line);
+        std::string tag;
+        dvec3 p, c;
+        if (words >> tag >> p.x >> p.y >> p.z >> c.x >> c.y >> c.z && tag == "v") got.push_back({p, c});
+    }
+    EXPECT_EQ(got, want);
+
+    const auto ply = run_firsthit("export " + (dir / "scene.yaml").string() + " --quiet -o " + (dir / "out.ply").string());
+    ASSERT_EQ(ply.status, 0) << ply.err;
+    const MeshData m = load_mesh((dir / "out.ply").string());
+    ASSERT_EQ(m.colors.size(), m.positions.size());
+    ASSERT_EQ(m.triangles.size(), 2u);
+    size_t matched = 0;
+    for (size_t v = 0; v < m.positions.size(); ++v)
+        for (const auto& [p, c] : want)
+            if (m.positions[v] == p) {
+                ++matched;
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_NEAR(m.colors[v][k], std::round(255 * c[k]) / 255, 1e-6) << "vertex " << v << " channel " << k;
+            }
+    EXPECT_EQ(matched, m.positions.size());
+
+    write_yaml_scene(dir, "view_point: [0, -20, 5], look_at: [0, 1, 0]", "{type: mesh, file: plain.obj, material: grey}");
+    ASSERT_EQ(run_firsthit("export " + (dir / "scene.yaml").string() + " --quiet -o " + (dir / "plain_out.obj").string()).status, 0);
+    std::ifstream plain(dir / "plain_out.obj");
+    int vertices = 0;
+    for (std::string line; std::getline(plain, line);)
+        if (line.rfind("v ", 0) == 0) {
+            ++vertices;
+            EXPECT_EQ(std::count(line.begin(), line.end(), ' '), 3) << line;
+        }
+    EXPECT_EQ(vertices, 3);
 }
 
 // Placed in a scene file, a model is lit by that file's lights as the
