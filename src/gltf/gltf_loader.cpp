@@ -54,7 +54,7 @@ public:
         if (materials.unused_textures > 0)
             warn(std::to_string(materials.unused_textures) +
                  " texture(s) not drawn (normal and metallic-roughness textures, and emissive or occlusion "
-                 "textures whose coordinates differ from the base colour texture's)");
+                 "textures on other coordinates than their mesh carries)");
         out.warnings.insert(out.warnings.begin(), warnings_.begin(), warnings_.end());
         return out;
     }

@@ -59,8 +59,14 @@ public:
         Material<double>& out = s.materials.back();
         const auto& pbr = mat.pbrMetallicRoughness;
         if (pbr.baseColorTexture.index >= 0) out.texture = texture_of(pbr.baseColorTexture.index, name, s, true);
-        // (Transforms parsed here only for these two: a base colour
-        // texture's bad transform is reported with the primitive that reads it.)
+        // The coordinates are compared only where the material has an
+        // emissive or occlusion texture; then a bad transform of any of its
+        // textures is reported with the material's name, and otherwise, as
+        // before these were drawn, with the primitive that reads it. Either
+        // texture's image and sampler must be good once it is drawn, as the
+        // base colour texture's must.
+        if (mat.occlusionTexture.index >= 0 && !(mat.occlusionTexture.strength >= 0 && mat.occlusionTexture.strength <= 1))
+            fail(name + ": occlusionTexture's strength must be in [0, 1]");
         std::optional<TextureCoords> carried;
         if (mat.emissiveTexture.index >= 0 || mat.occlusionTexture.index >= 0) carried = carried_coords(mat, file_, name);
         auto drawn = [&](const auto& info) {
@@ -70,10 +76,8 @@ public:
         };
         if (drawn(mat.emissiveTexture)) out.emissive_texture = texture_of(mat.emissiveTexture.index, name, s, true);
         if (drawn(mat.occlusionTexture)) {
-            const double strength = mat.occlusionTexture.strength;
-            if (!(strength >= 0 && strength <= 1)) fail(name + ": occlusionTexture's strength must be in [0, 1]");
             out.occlusion_texture = texture_of(mat.occlusionTexture.index, name, s, false);
-            out.occlusion_strength = strength;
+            out.occlusion_strength = mat.occlusionTexture.strength;
         }
         for (const int t : {pbr.metallicRoughnessTexture.index, mat.normalTexture.index}) unused_textures_ += t >= 0;
         const double alpha = pbr.baseColorFactor.size() == 4 ? std::clamp(pbr.baseColorFactor[3], 0.0, 1.0) : 1.0;

@@ -71,6 +71,26 @@ TEST(GltfBlend, TheColourIsAlphaTimesTheSurfacePlusTheRestFromBehind) {
     }
 }
 
+TEST(GltfBlend, PacketsMixingPaneAndWorldLanesOverTheWorldsOwnPlane) {
+    // The pane (alpha 0.25, no shadow) covers x in [-1, -0.5] only, above a
+    // plane of the world's own at z = 0 given the file's red material:
+    // columns 0-1 (x = -0.825, -0.575) see through the pane onto the plane,
+    // (204, 51, 51); columns 2-7 the plane alone, lit red. Every packet
+    // holds lanes of both at depth 0, and the world's plane takes the
+    // opacity-1 path of primitives that are not instances.
+    const std::string json =
+        quads_file({{-1, -0.5, -1, 1, 1, 0}}, surfaces({blend("[1, 1, 1, 0.25]"), material("[1, 0, 0, 1]")}));
+    for (const Precision p : kPrecisions) {
+        Scene s = lit(json);
+        ASSERT_EQ(s.material_names[1], "m/material 1");
+        s.planes.push_back({{0, 0, 1}, 0, 1});
+        const Image im = top_view(s, p);
+        expect_columns(im, 0, 2, {204, 51, 51}, std::string(precision_name(p)) + ", through the pane");
+        expect_columns(im, 2, 8, {204, 0, 0}, std::string(precision_name(p)) + ", the plane alone");
+        EXPECT_EQ(counts_of(s, p).transmitted, 16u) << precision_name(p);
+    }
+}
+
 TEST(GltfBlend, TheTexturesAlphaMultipliesTheFactors) {
     // The white quad's texture: left texel alpha 0, right alpha 1 (nearest,
     // clamped), factor alpha 1: the left half shows the red quad, lit (no

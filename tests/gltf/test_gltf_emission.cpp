@@ -7,6 +7,7 @@
 // ambient term is 51).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -122,7 +123,7 @@ TEST(GltfOcclusion, OneTextureAsEmissiveColourAndAsOcclusionDataIsReadBothWays) 
     EXPECT_TRUE(s.textures[size_t(m.emissive_texture)].srgb);
     EXPECT_FALSE(s.textures[size_t(m.occlusion_texture)].srgb);
     EXPECT_EQ(s.textures[0].image, s.textures[1].image);
-    // Lit: ambient 51 x 64/255 = 12.80, sun 153, emission 255 x lin(64) = 13.09.
+    // Lit: ambient 51 x 64/255 = 12.80, sun 153, emission 255 x lin(64) = 13.07.
     const int want = int(std::lround(51 * 64 / 255.0 + 153 + 255 * srgb_to_linear(64)));
     for (const Precision p : kPrecisions) expect_columns(top_view(lit(json), p), 0, 8, {want, want, want}, precision_name(p));
 }
@@ -131,8 +132,11 @@ TEST(GltfEmission, TexturesOnOtherCoordinatesThanTheBaseColoursAreCountedNotDraw
     // Base colour texture on TEXCOORD_0; an emissive texture on TEXCOORD_1
     // and an occlusion texture on TEXCOORD_0 moved by a transform: the mesh
     // carries one set of coordinates, so neither is drawn; with the normal
-    // and metallic-roughness textures, one warning counting 4. The
-    // emissive factor is still added (51 in green), untextured.
+    // and metallic-roughness textures, one warning counting 4. All four
+    // read one grey texel, sRGB 128 (linear 0.21586): the base colour lit,
+    // 204 x 0.21586 = 44.04, plus the emissive factor untextured, 51 in
+    // green: (44, 95, 44). (Drawn, the emissive texel would make the green
+    // 44 + 11.0, the occlusion the grey 38.6.)
     Quad q{-1, 1, -1, 1, 0, 0};
     q.uv1 = {0, 0, 1, 0, 1, 1, 0, 1};
     const std::string rest =
@@ -142,17 +146,20 @@ TEST(GltfEmission, TexturesOnOtherCoordinatesThanTheBaseColoursAreCountedNotDraw
                   "{\"index\": 0}}, \"normalTexture\": {\"index\": 0}, \"emissiveFactor\": [0, 0.2, 0], "
                   "\"emissiveTexture\": {\"index\": 0, \"texCoord\": 1}, \"occlusionTexture\": {\"index\": 0, "
                   "\"extensions\": {\"KHR_texture_transform\": {\"offset\": [0.5, 0]}}}}"},
-                 {{-1, 0}}, {image_json(rgb_png(1, 1, 255, 255, 255))});
+                 {{-1, 0}}, {image_json(rgb_png(1, 1, 128, 128, 128))});
     const std::string json = quads_file({q}, rest);
     const GltfFile f = load(json);
     ASSERT_EQ(f.warnings.size(), 1u);
     EXPECT_EQ(f.warnings[0],
               "t.gltf: warning: 4 texture(s) not drawn (normal and metallic-roughness textures, and emissive or "
-              "occlusion textures whose coordinates differ from the base colour texture's)");
+              "occlusion textures on other coordinates than their mesh carries)");
     EXPECT_EQ(f.scene.materials[0].texture, 0);
     EXPECT_EQ(f.scene.materials[0].emissive_texture, -1);
     EXPECT_EQ(f.scene.materials[0].occlusion_texture, -1);
-    for (const Precision p : kPrecisions) expect_columns(top_view(lit(json), p), 0, 8, {204, 255, 204}, precision_name(p));
+    const int grey = int(std::lround(204 * srgb_to_linear(128)));
+    EXPECT_EQ(grey, 44);
+    for (const Precision p : kPrecisions)
+        expect_columns(top_view(lit(json), p), 0, 8, {grey, grey + 51, grey}, precision_name(p));
 
     // The same textures on the base colour's own coordinates are drawn.
     std::string same = rest;
