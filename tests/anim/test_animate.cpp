@@ -49,7 +49,7 @@ TEST(Animate, EachInterpolationByHand) {
 }
 
 // A scene with named things, 24 x 24, and a movie over it.
-const std::string kScene =
+const std::string kAnimatedScene =
     "materials:\n"
     "  red: {color: [255, 19, 1], ambient: 0.1, diffuse: 0.5, specular: 1.5, phong_exponent: 10}\n"
     "  teal: {color: [20, 255, 255], ambient: 0.1, diffuse: 0.3, specular: 10, phong_exponent: 100,"
@@ -117,14 +117,14 @@ TEST(Animate, EveryPropertyChangesTheFrameAsTheSceneFileWould) {
         {"camera.projection_distance", "5", "projection_distance: 10", "projection_distance: 5"},
         {"camera.view_point", "[3, -10, 10]", "view_point: [2, -10, 10]", "view_point: [3, -10, 10]"},
     };
-    const fs::path dir = fs::path(write_temp_file("animate_all/scene.yaml", kScene)).parent_path();
+    const fs::path dir = fs::path(write_temp_file("animate_all/scene.yaml", kAnimatedScene)).parent_path();
     write_temp_file("animate_all/base.yaml", "scene: scene.yaml\nlights: [ambient, spot]\nseconds: 0.1\n");
     const std::string base = frame_bytes(dir, "base.yaml");
     for (const Case& c : cases) {
         const std::string name = c.path;
         write_temp_file("animate_all/" + name + ".movie.yaml", "scene: scene.yaml\nlights: " + c.movie_lights +
                         "\nseconds: 0.1\nanimate:\n  " + c.path + ": " + c.value + "\n");
-        write_temp_file("animate_all/" + name + ".scene.yaml", c.from.empty() ? kScene : replaced(kScene, c.from, c.to));
+        write_temp_file("animate_all/" + name + ".scene.yaml", c.from.empty() ? kAnimatedScene : replaced(kAnimatedScene, c.from, c.to));
         write_temp_file("animate_all/" + name + ".expected.yaml", "scene: " + name + ".scene.yaml\nlights: " +
                         c.expected_lights + "\nseconds: 0.1\n");
         const std::string animated = frame_bytes(dir, name + ".movie.yaml");
@@ -134,7 +134,7 @@ TEST(Animate, EveryPropertyChangesTheFrameAsTheSceneFileWould) {
 }
 
 TEST(Animate, TimeAndFrameKeysAgreeAtTheKeys) {
-    write_temp_file("animate_time/scene.yaml", kScene);
+    write_temp_file("animate_time/scene.yaml", kAnimatedScene);
     const Movie m = load_movie(write_temp_file("animate_time/m.yaml",
         "scene: scene.yaml\nfps: 24\nseconds: 2\nanimate:\n"
         "  surfaces.ball.radius: {keyframes: [{time: 0, value: 1}, {time: 0.5, value: 2}, {frame: 36, value: 0.5},"
@@ -157,7 +157,7 @@ TEST(Animate, TimeAndFrameKeysAgreeAtTheKeys) {
 }
 
 TEST(Animate, FollowingAndAimingAtMovingThings) {
-    write_temp_file("animate_follow/scene.yaml", kScene);
+    write_temp_file("animate_follow/scene.yaml", kAnimatedScene);
     const Movie m = load_movie(write_temp_file("animate_follow/m.yaml",
         "scene: scene.yaml\nfps: 4\nseconds: 1\nanimate:\n"
         "  surfaces.ball.center: {keyframes: [{frame: 0, value: [0, 0, 0]}, {frame: 4, value: [4, 0, 0]}]}\n"
@@ -177,7 +177,7 @@ TEST(Animate, FollowingAndAimingAtMovingThings) {
 }
 
 TEST(Animate, TheEffectPlanFollowsTheLightsPerFrame) {
-    write_temp_file("animate_plan/scene.yaml", kScene);
+    write_temp_file("animate_plan/scene.yaml", kAnimatedScene);
     const std::string movie = write_temp_file("animate_plan/m.yaml",
         "scene: scene.yaml\nlights: [ambient]\nfps: 4\nseconds: 1\nanimate:\n"
         "  lights.spot.on: {keyframes: [{frame: 0, value: false}, {frame: 2, value: true}]}\n"
@@ -197,7 +197,7 @@ TEST(Animate, TheEffectPlanFollowsTheLightsPerFrame) {
 }
 
 std::string movie_error(const std::string& name, const std::string& animate) {
-    write_temp_file("animate_errors/scene.yaml", kScene);
+    write_temp_file("animate_errors/scene.yaml", kAnimatedScene);
     const std::string path = write_temp_file("animate_errors/" + name,
                                              "scene: scene.yaml\nfps: 5\nseconds: 1\nanimate:\n" + animate);
     try {

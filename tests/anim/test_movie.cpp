@@ -9,15 +9,12 @@
 #include <vector>
 
 #include "anim/movie.h"
+#include "support/expect_vec.h"
 
 namespace fh {
 namespace {
 
-void expect_vec_near(const dvec3& got, const dvec3& want, double tol = 1e-12) {
-    EXPECT_NEAR(got.x, want.x, tol);
-    EXPECT_NEAR(got.y, want.y, tol);
-    EXPECT_NEAR(got.z, want.z, tol);
-}
+using test::expect_vec_near;
 
 // docs/model.md section 5: a full orbit over 10 s at 30 fps, always looking at the origin.
 Movie spec_movie(double center_y, double center_z) {

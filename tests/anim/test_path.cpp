@@ -6,15 +6,12 @@
 #include <vector>
 
 #include "anim/path.h"
+#include "support/expect_vec.h"
 
 namespace fh {
 namespace {
 
-void expect_vec_near(const dvec3& got, const dvec3& want, double tol = 1e-12) {
-    EXPECT_NEAR(got.x, want.x, tol);
-    EXPECT_NEAR(got.y, want.y, tol);
-    EXPECT_NEAR(got.z, want.z, tol);
-}
+using test::expect_vec_near;
 
 dvec3 at(const Path& p, int frame, int n = 100, dvec3 eye = dvec3(0)) {
     return evaluate(p, frame, n, eye);

@@ -130,4 +130,9 @@ inline std::string source_path(const std::string& rel) {
     return std::string(FIRSTHIT_SOURCE_DIR) + "/" + rel;
 }
 
+// scripts/NAME with the arguments, driving this build's firsthit.
+inline CommandResult run_script(const std::string& name, const std::string& args) {
+    return run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " + source_path("scripts/" + name) + " " + args);
+}
+
 }  // namespace fh::test

@@ -31,6 +31,12 @@ inline std::filesystem::path small_movie(const std::string& name, int width, int
     return dir;
 }
 
+// DIR/tiny.yaml: a 64x64 copy of the report's scene and a one-second orbit
+// of it at `fps` frames a second.
+inline std::filesystem::path tiny_movie(const std::string& name, int fps = 12) {
+    return small_movie(name, 64, 64, fps, "tiny.yaml");
+}
+
 // The names in a folder, sorted; none if it does not exist.
 inline std::vector<std::string> files_in(const std::filesystem::path& dir) {
     std::vector<std::string> names;

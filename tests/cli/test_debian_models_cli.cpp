@@ -130,7 +130,6 @@ const Expected kMeshFiles[] = {
     {"STL/triangle_with_two_solids.stl", ""},
 };
 
-bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
 // Every file under `folder` whose name is one of `suffixes` (or, with an
 // empty list, every file but pictures and material libraries).
@@ -157,7 +156,7 @@ void check(const std::string& target, const std::string& file, const std::string
     SCOPED_TRACE(file);
     const auto r = run_firsthit("render " + target + " -o " + png.string() + " --resolution 96x72 --threads 1");
     const std::string full = (kModels / file).string();
-    const bool renders = expected.empty() || starts_with(expected, "warning: ");
+    const bool renders = expected.empty() || expected.starts_with("warning: ");
     if (renders) {
         ASSERT_EQ(r.status, 0) << r.err;
         const Image image = read_png(png.string());
@@ -169,7 +168,7 @@ void check(const std::string& target, const std::string& file, const std::string
         // stderr: the warning, if any, then "wrote PATH ...".
         const std::string wrote = "wrote " + png.string();
         if (expected.empty()) {
-            EXPECT_TRUE(starts_with(r.err, wrote)) << r.err;
+            EXPECT_TRUE(r.err.starts_with(wrote)) << r.err;
         } else {
             // Each warning (a line of `expected`) on a line of its own, in order.
             std::string lines;
@@ -179,7 +178,7 @@ void check(const std::string& target, const std::string& file, const std::string
                 at = end + 1;
             }
             lines.pop_back();
-            EXPECT_TRUE(starts_with(r.err, lines)) << r.err;
+            EXPECT_TRUE(r.err.starts_with(lines)) << r.err;
             EXPECT_NE(r.err.find("\n" + wrote), std::string::npos) << r.err;
         }
         const long warnings = expected.empty() ? 0 : 1 + std::count(expected.begin(), expected.end(), '\n');
@@ -189,7 +188,7 @@ void check(const std::string& target, const std::string& file, const std::string
         EXPECT_FALSE(fs::exists(png));
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
         // FILE: error: ..., or FILE:LINE:COLUMN: error: ...
-        EXPECT_TRUE(starts_with(r.err, full + ":")) << r.err;
+        EXPECT_TRUE(r.err.starts_with(full + ":")) << r.err;
         EXPECT_NE(r.err.find(": error: "), std::string::npos) << r.err;
         EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
     }

@@ -20,8 +20,6 @@ fs::path movie_dir(const std::string& name) {
     return small_movie(name, 48, 40, 10, "movie.yaml", "render: {samples_per_pixel: 2}\n");
 }
 
-std::vector<std::string> listing(const fs::path& dir) { return frames_in(dir); }
-
 void run_frames(const fs::path& dir, const fs::path& out, const std::string& extra) {
     const auto r = run_firsthit("frames " + (dir / "movie.yaml").string() + " --quiet --out " + out.string() + " " +
                                 extra);
@@ -29,15 +27,15 @@ void run_frames(const fs::path& dir, const fs::path& out, const std::string& ext
 }
 
 void expect_same_folder(const fs::path& a, const fs::path& b, const std::string& what) {
-    ASSERT_EQ(listing(a), listing(b)) << what;
-    for (const auto& name : listing(a)) EXPECT_EQ(slurp(a / name), slurp(b / name)) << what << ": " << name;
+    ASSERT_EQ(frames_in(a), frames_in(b)) << what;
+    for (const auto& name : frames_in(a)) EXPECT_EQ(slurp(a / name), slurp(b / name)) << what << ": " << name;
 }
 
 TEST(DeterminismCli, FramesAreTheSameBytesForAnyThreadsAndShardLayout) {
     const fs::path dir = movie_dir("determinism_frames");
     const fs::path ref = dir / "ref";
     run_frames(dir, ref, "--threads 1");
-    ASSERT_EQ(listing(ref).size(), 10u);
+    ASSERT_EQ(frames_in(ref).size(), 10u);
 
     for (const int threads : {2, 3, 7}) {
         const fs::path out = dir / ("threads" + std::to_string(threads));
@@ -90,7 +88,7 @@ TEST(DeterminismCli, FramesOverAMeshAreTheSameBytesForAnyThreadsAndShards) {
     std::ofstream(dir / "scene.yaml") << scene;
     const fs::path ref = dir / "ref";
     run_frames(dir, ref, "--threads 1");
-    ASSERT_EQ(listing(ref).size(), 10u);
+    ASSERT_EQ(frames_in(ref).size(), 10u);
     const fs::path threads = dir / "threads3";
     run_frames(dir, threads, "--threads 3");
     expect_same_folder(ref, threads, "--threads 3");

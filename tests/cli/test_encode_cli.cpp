@@ -18,20 +18,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// DIR/tiny.yaml: 64 x 64, `fps` frames at `fps` fps.
-fs::path tiny_movie(const std::string& name, int fps = 12) { return small_movie(name, 64, 64, fps, "tiny.yaml"); }
-
 // Renders the movie's frames (`extra`: e.g. --range A:B) into DIR/f; returns DIR/f.
 fs::path render_frames(const fs::path& dir, const std::string& extra = "") {
     const fs::path out = dir / "f";
     const auto r = run_firsthit("frames " + (dir / "tiny.yaml").string() + " --quiet --out " + out.string() + " " + extra);
     EXPECT_EQ(r.status, 0) << r.err;
     return out;
-}
-
-// scripts/NAME with the arguments, driving this build's firsthit.
-CommandResult run_script(const std::string& name, const std::string& args) {
-    return run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " + source_path("scripts/" + name) + " " + args);
 }
 
 CommandResult encode(const std::string& args) { return run_script("encode.sh", args); }

@@ -13,25 +13,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A 64x64 copy of the report's scene and a 12-frame orbit of it.
-fs::path tiny_movie(const std::string& name) { return small_movie(name, 64, 64, 12, "tiny.yaml"); }
-
-std::vector<std::string> frame_files(const fs::path& dir) { return frames_in(dir); }
-
-std::string frames(const fs::path& dir, const std::string& extra) {
+std::string frames_command(const fs::path& dir, const std::string& extra) {
     return "frames " + (dir / "tiny.yaml").string() + " --quiet " + extra;
-}
-
-// scripts/NAME with the arguments, driving this build's firsthit.
-CommandResult run_script(const std::string& name, const std::string& args) {
-    return run_shell("FIRSTHIT=" + std::string(FIRSTHIT_BINARY) + " " + source_path("scripts/" + name) + " " + args);
 }
 
 TEST(FramesCli, RendersEveryFrameWhole) {
     const fs::path dir = tiny_movie("frames_all");
-    const auto r = run_firsthit(frames(dir, "--out " + (dir / "f").string()));
+    const auto r = run_firsthit(frames_command(dir, "--out " + (dir / "f").string()));
     ASSERT_EQ(r.status, 0) << r.err;
-    const auto names = frame_files(dir / "f");
+    const auto names = frames_in(dir / "f");
     ASSERT_EQ(names.size(), 12u);
     EXPECT_EQ(names.front(), "frame_0000.png");
     EXPECT_EQ(names.back(), "frame_0011.png");
@@ -40,35 +30,35 @@ TEST(FramesCli, RendersEveryFrameWhole) {
 
 TEST(FramesCli, RangeShardsAndResumeGiveTheSameBytesAsOneRun) {
     const fs::path dir = tiny_movie("frames_parts");
-    ASSERT_EQ(run_firsthit(frames(dir, "--out " + (dir / "full").string())).status, 0);
+    ASSERT_EQ(run_firsthit(frames_command(dir, "--out " + (dir / "full").string())).status, 0);
 
-    ASSERT_EQ(run_firsthit(frames(dir, "--range 3:6 --out " + (dir / "range").string())).status, 0);
-    EXPECT_EQ(frame_files(dir / "range"),
+    ASSERT_EQ(run_firsthit(frames_command(dir, "--range 3:6 --out " + (dir / "range").string())).status, 0);
+    EXPECT_EQ(frames_in(dir / "range"),
               (std::vector<std::string>{"frame_0003.png", "frame_0004.png", "frame_0005.png"}));
 
     for (int k = 0; k < 3; ++k)
-        ASSERT_EQ(run_firsthit(frames(dir, "--shard " + std::to_string(k) + "/3 --threads 1 --out " +
+        ASSERT_EQ(run_firsthit(frames_command(dir, "--shard " + std::to_string(k) + "/3 --threads 1 --out " +
                                                (dir / "shards").string()))
                       .status,
                   0);
-    ASSERT_EQ(frame_files(dir / "shards"), frame_files(dir / "full"));
-    for (const auto& name : frame_files(dir / "full"))
+    ASSERT_EQ(frames_in(dir / "shards"), frames_in(dir / "full"));
+    for (const auto& name : frames_in(dir / "full"))
         EXPECT_EQ(slurp(dir / "shards" / name), slurp(dir / "full" / name)) << name;
 
     // Lose two frames and truncate a third; --resume renders exactly those.
     fs::remove(dir / "shards" / "frame_0002.png");
     fs::remove(dir / "shards" / "frame_0007.png");
     fs::resize_file(dir / "shards" / "frame_0009.png", 100);
-    const auto r = run_firsthit(frames(dir, "--resume --stats --out " + (dir / "shards").string()));
+    const auto r = run_firsthit(frames_command(dir, "--resume --stats --out " + (dir / "shards").string()));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("frames: 3\n"), std::string::npos) << r.out;
-    for (const auto& name : frame_files(dir / "full"))
+    for (const auto& name : frames_in(dir / "full"))
         EXPECT_EQ(slurp(dir / "shards" / name), slurp(dir / "full" / name)) << name;
 }
 
 TEST(FramesCli, OneFrameFromRenderEqualsTheSameFrameOfTheMovie) {
     const fs::path dir = tiny_movie("frames_single");
-    ASSERT_EQ(run_firsthit(frames(dir, "--out " + (dir / "f").string())).status, 0);
+    ASSERT_EQ(run_firsthit(frames_command(dir, "--out " + (dir / "f").string())).status, 0);
     ASSERT_EQ(run_firsthit("render " + (dir / "tiny.yaml").string() + " --frame 5 -o " +
                            (dir / "one.png").string())
                   .status,
@@ -79,25 +69,25 @@ TEST(FramesCli, OneFrameFromRenderEqualsTheSameFrameOfTheMovie) {
 TEST(FramesCli, BadSelectionsAreUsageErrors) {
     const fs::path dir = tiny_movie("frames_bad");
     const std::string out = " --out " + (dir / "f").string();
-    EXPECT_EQ(run_firsthit(frames(dir, "--range 0:13" + out)).err,
+    EXPECT_EQ(run_firsthit(frames_command(dir, "--range 0:13" + out)).err,
               "firsthit: error: --range 0:13: frame 12 is past the movie's end: its 12 frames are 0 to 11\n");
-    EXPECT_EQ(run_firsthit(frames(dir, "--shard 3/3" + out)).err,
+    EXPECT_EQ(run_firsthit(frames_command(dir, "--shard 3/3" + out)).err,
               "firsthit: error: --shard 3/3: need 0 <= K < N\n");
-    EXPECT_EQ(run_firsthit(frames(dir, "--shard 3/3" + out)).status, 2);
+    EXPECT_EQ(run_firsthit(frames_command(dir, "--shard 3/3" + out)).status, 2);
     EXPECT_EQ(run_firsthit("frames " + source_path("animations/scene.yaml")).status, 2);
 }
 
 TEST(FramesCli, RawVideoIsEveryFrameInOrder) {
     // Three workers finish frames out of order; the stream must not be.
     const fs::path dir = tiny_movie("frames_raw");
-    const auto r = run_firsthit(frames(dir, "--threads 3 --out " + (dir / "f").string() +
+    const auto r = run_firsthit(frames_command(dir, "--threads 3 --out " + (dir / "f").string() +
                                                 " --raw-video " + (dir / "raw.rgb").string()));
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string raw = slurp(dir / "raw.rgb");
     constexpr size_t kFrameBytes = 64 * 64 * 3;
     ASSERT_EQ(raw.size(), 12 * kFrameBytes);
     for (int i = 0; i < 12; ++i) {
-        const Image png = read_png((dir / "f" / frame_files(dir / "f")[size_t(i)]).string());
+        const Image png = read_png((dir / "f" / frames_in(dir / "f")[size_t(i)]).string());
         EXPECT_EQ(raw.compare(size_t(i) * kFrameBytes, kFrameBytes,
                               reinterpret_cast<const char*>(png.rgb.data()), kFrameBytes),
                   0)
@@ -107,14 +97,14 @@ TEST(FramesCli, RawVideoIsEveryFrameInOrder) {
 
 TEST(FramesCli, RawVideoInYuv420pIsEachFrameConverted) {
     const fs::path dir = tiny_movie("frames_raw_yuv");
-    const auto r = run_firsthit(frames(dir, "--threads 3 --out " + (dir / "f").string() + " --raw-video " +
+    const auto r = run_firsthit(frames_command(dir, "--threads 3 --out " + (dir / "f").string() + " --raw-video " +
                                                 (dir / "raw.yuv").string() + " --raw-pix-fmt yuv420p"));
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string raw = slurp(dir / "raw.yuv");
     constexpr size_t kFrameBytes = 64 * 64 * 3 / 2;
     ASSERT_EQ(raw.size(), 12 * kFrameBytes);
     for (int i = 0; i < 12; ++i) {
-        const auto yuv = to_yuv420p(read_png((dir / "f" / frame_files(dir / "f")[size_t(i)]).string()));
+        const auto yuv = to_yuv420p(read_png((dir / "f" / frames_in(dir / "f")[size_t(i)]).string()));
         EXPECT_EQ(raw.compare(size_t(i) * kFrameBytes, kFrameBytes, reinterpret_cast<const char*>(yuv.data()),
                               kFrameBytes),
                   0)
@@ -125,17 +115,17 @@ TEST(FramesCli, RawVideoInYuv420pIsEachFrameConverted) {
 TEST(FramesCli, RawVideoErrors) {
     const fs::path dir = tiny_movie("frames_raw_bad");
     const std::string out = " --out " + (dir / "f").string();
-    EXPECT_EQ(run_firsthit(frames(dir, "--shard 0/2 --raw-video -" + out)).err,
+    EXPECT_EQ(run_firsthit(frames_command(dir, "--shard 0/2 --raw-video -" + out)).err,
               "firsthit: error: --raw-video streams whole runs of frames: not with --shard or --resume\n");
-    EXPECT_EQ(run_firsthit(frames(dir, "--stats --raw-video -" + out)).err,
+    EXPECT_EQ(run_firsthit(frames_command(dir, "--stats --raw-video -" + out)).err,
               "firsthit: error: --raw-video - writes frames to standard output: not with --stats\n");
-    EXPECT_EQ(run_firsthit(frames(dir, "--raw-video " + (dir / "x.raw").string() + " --raw-pix-fmt yuv444p" + out)).err,
+    EXPECT_EQ(run_firsthit(frames_command(dir, "--raw-video " + (dir / "x.raw").string() + " --raw-pix-fmt yuv444p" + out)).err,
               "firsthit: error: --raw-pix-fmt: unknown raw pixel format 'yuv444p' (rgb24 or yuv420p)\n");
-    EXPECT_EQ(run_firsthit(frames(dir, "--raw-pix-fmt yuv420p" + out)).err,
+    EXPECT_EQ(run_firsthit(frames_command(dir, "--raw-pix-fmt yuv420p" + out)).err,
               "firsthit: error: --raw-pix-fmt goes with --raw-video\n");
     // The encoder goes away: one clear line and a failure, not a SIGPIPE death.
     const auto r = run_shell("bash -c 'set -o pipefail; " + std::string(FIRSTHIT_BINARY) + " " +
-                             frames(dir, "--raw-video -" + out) + " | head -c 100 >/dev/null'");
+                             frames_command(dir, "--raw-video -" + out) + " | head -c 100 >/dev/null'");
     EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.err.find("cannot write raw video to standard output: the reader closed it"),
               std::string::npos)
@@ -146,7 +136,7 @@ TEST(EncodeScript, StreamingWhileRenderingGivesTheSameMp4AsEncodingTheFiles) {
     const fs::path dir = tiny_movie("encode_stream");
     const auto made = run_script("make_movie.sh", (dir / "tiny.yaml").string() + " " + (dir / "out").string());
     ASSERT_EQ(made.status, 0) << made.err;
-    ASSERT_EQ(frame_files(dir / "out" / "tiny").size(), 12u);
+    ASSERT_EQ(frames_in(dir / "out" / "tiny").size(), 12u);
     const auto r = run_script("encode.sh", (dir / "out" / "tiny").string() +
                               " " + (dir / "files.mp4").string() + " --fps 12");
     ASSERT_EQ(r.status, 0) << r.err;
@@ -156,7 +146,7 @@ TEST(EncodeScript, StreamingWhileRenderingGivesTheSameMp4AsEncodingTheFiles) {
 
 TEST(EncodeScript, MakesAnMp4ThatFfprobeReads) {
     const fs::path dir = tiny_movie("encode");
-    ASSERT_EQ(run_firsthit(frames(dir, "--out " + (dir / "f").string())).status, 0);
+    ASSERT_EQ(run_firsthit(frames_command(dir, "--out " + (dir / "f").string())).status, 0);
     const fs::path mp4 = dir / "tiny.mp4";
     const auto r = run_script("encode.sh", (dir / "f").string() + " " + mp4.string() + " --fps 12");
     ASSERT_EQ(r.status, 0) << r.err;
@@ -178,7 +168,7 @@ TEST(EncodeScript, RefusesEmptyFoldersAndGaps) {
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("holds no frames"), std::string::npos) << r.err;
 
-    ASSERT_EQ(run_firsthit(frames(dir, "--out " + (dir / "f").string())).status, 0);
+    ASSERT_EQ(run_firsthit(frames_command(dir, "--out " + (dir / "f").string())).status, 0);
     fs::remove(dir / "f" / "frame_0004.png");
     r = run_script("encode.sh", (dir / "f").string() + " " + (dir / "x.mp4").string());
     EXPECT_EQ(r.status, 2);
@@ -258,7 +248,7 @@ TEST(MakeMovies, RendersAndEncodesMoviesSideBySide) {
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(files_in(dir / "out"), (std::vector<std::string>{"a", "a.mp4", "b", "b.mp4"}));
     for (const char* name : {"a", "b"}) {
-        EXPECT_EQ(frame_files(dir / "out" / name).size(), 12u);
+        EXPECT_EQ(frames_in(dir / "out" / name).size(), 12u);
         EXPECT_EQ(probe(dir / "out" / (std::string(name) + ".mp4")), "width=48\nheight=32\nnb_read_frames=12\n");
         // Against encoding the frame files with one x264 thread too (ffmpeg
         // converting to yuv420p): both videos are as close to the frames.
@@ -266,7 +256,7 @@ TEST(MakeMovies, RendersAndEncodesMoviesSideBySide) {
                                   (dir / (std::string(name) + "_files.mp4")).string() + " --fps 12 --threads 1");
         ASSERT_EQ(e.status, 0) << e.err;
         Image frames(48, 0);  // the PNGs, stacked as decoded() stacks the video's
-        for (const auto& f : frame_files(dir / "out" / name)) {
+        for (const auto& f : frames_in(dir / "out" / name)) {
             const Image im = read_png((dir / "out" / name / f).string());
             frames.rgb.insert(frames.rgb.end(), im.rgb.begin(), im.rgb.end());
             frames.height += im.height;

@@ -41,7 +41,9 @@ fs::path movie_dir(const std::string& name, int side, int spp) {
     return dir;
 }
 
-std::vector<std::string> listing(const fs::path& dir) {
+// The names in a folder, sorted, read without throwing while firsthit may
+// still be writing or renaming files in it.
+std::vector<std::string> names_so_far(const fs::path& dir) {
     std::vector<std::string> names;
     std::error_code ec;
     for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
@@ -55,7 +57,7 @@ const std::regex kTemporaryName("frame_[0-9]{4}\\.png\\.tmp-.+-[0-9]+-[0-9]+");
 
 int count_frames(const fs::path& dir) {
     int n = 0;
-    for (const auto& name : listing(dir)) n += std::regex_match(name, kFrameName);
+    for (const auto& name : names_so_far(dir)) n += std::regex_match(name, kFrameName);
     return n;
 }
 
@@ -64,7 +66,7 @@ int count_frames(const fs::path& dir) {
 // number of temporaries.
 int check_only_whole_frames(const fs::path& dir, const fs::path& reference) {
     int temporaries = 0;
-    for (const auto& name : listing(dir)) {
+    for (const auto& name : names_so_far(dir)) {
         if (std::regex_match(name, kTemporaryName)) {
             ++temporaries;
             continue;
@@ -108,8 +110,8 @@ void resume_and_compare(const fs::path& dir, const fs::path& out, const fs::path
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("frames: " + std::to_string(kFrames - present) + "\n"), std::string::npos)
         << present << " frames were present; " << r.out;
-    EXPECT_EQ(listing(out), listing(reference));
-    for (const auto& name : listing(reference)) EXPECT_EQ(slurp(out / name), slurp(reference / name)) << name;
+    EXPECT_EQ(names_so_far(out), names_so_far(reference));
+    for (const auto& name : names_so_far(reference)) EXPECT_EQ(slurp(out / name), slurp(reference / name)) << name;
 }
 
 fs::path reference_run(const fs::path& dir) {
@@ -196,7 +198,7 @@ TEST(InterruptCli, SlowFramesInFlightAreAbandonedWithinASecond) {
     EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM);
     EXPECT_LT(took, 1s * kSlowdown);
     EXPECT_NE(slurp(b.err).find("frames in flight abandoned"), std::string::npos) << slurp(b.err);
-    EXPECT_EQ(listing(out), std::vector<std::string>{"frame_movie.txt"});  // no frame
+    EXPECT_EQ(names_so_far(out), std::vector<std::string>{"frame_movie.txt"});  // no frame
 }
 
 TEST(InterruptCli, SecondSignalStopsAtOnce) {
@@ -212,7 +214,7 @@ TEST(InterruptCli, SecondSignalStopsAtOnce) {
     ASSERT_TRUE(WIFEXITED(status)) << status;
     EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
     EXPECT_LT(std::chrono::steady_clock::now() - sent, 400ms * kSlowdown);
-    EXPECT_EQ(listing(out), std::vector<std::string>{"frame_movie.txt"});  // no frame
+    EXPECT_EQ(names_so_far(out), std::vector<std::string>{"frame_movie.txt"});  // no frame
 }
 
 }  // namespace

@@ -12,11 +12,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A 64x64 copy of the report's scene and a 12-frame orbit of it.
-fs::path tiny_movie(const std::string& name) { return small_movie(name, 64, 64, 12, "tiny.yaml"); }
-
-std::vector<std::string> frame_files(const fs::path& dir) { return frames_in(dir); }
-
 // firsthit frames with exactly the scheduler variables `env` (VAR=value
 // words), whatever the environment ctest runs in.
 CommandResult frames_with_env(const fs::path& dir, const std::string& env, const std::string& args) {
@@ -31,7 +26,7 @@ TEST(ShardAutoCli, SlurmArrayFromOneAndKubernetesGiveTheBytesOfOneRun) {
     ASSERT_EQ(run_firsthit("frames " + (dir / "tiny.yaml").string() + " --quiet --out " + (dir / "full").string())
                   .status,
               0);
-    const auto full = frame_files(dir / "full");
+    const auto full = frames_in(dir / "full");
     ASSERT_EQ(full.size(), 12u);
 
     // sbatch --array=1-3: task IDs 1, 2, 3 render shards 0, 1, 2 of 3.
@@ -45,8 +40,8 @@ TEST(ShardAutoCli, SlurmArrayFromOneAndKubernetesGiveTheBytesOfOneRun) {
         ASSERT_EQ(r.status, 0) << r.err;
         std::vector<std::string> want;
         for (int i = id - 1; i < 12; i += 3) want.push_back(full[size_t(i)]);
-        EXPECT_EQ(frame_files(out), want) << "task " << id;
-        for (const auto& name : frame_files(out))
+        EXPECT_EQ(frames_in(out), want) << "task " << id;
+        for (const auto& name : frames_in(out))
             EXPECT_EQ(slurp(out / name), slurp(dir / "full" / name)) << name;
     }
 
@@ -56,7 +51,7 @@ TEST(ShardAutoCli, SlurmArrayFromOneAndKubernetesGiveTheBytesOfOneRun) {
                                        "--shard auto --shards 4 --out " + (dir / "k8s").string());
         ASSERT_EQ(r.status, 0) << r.err;
     }
-    ASSERT_EQ(frame_files(dir / "k8s"), full);
+    ASSERT_EQ(frames_in(dir / "k8s"), full);
     for (const auto& name : full) EXPECT_EQ(slurp(dir / "k8s" / name), slurp(dir / "full" / name)) << name;
 }
 
@@ -87,7 +82,7 @@ TEST(ShardAutoCli, MissingOrBadEnvironmentIsAUsageError) {
         EXPECT_EQ(r.err.rfind("firsthit: error: ", 0), 0u) << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     }
-    EXPECT_TRUE(frame_files(dir / "f").empty());  // nothing rendered
+    EXPECT_TRUE(frames_in(dir / "f").empty());  // nothing rendered
 }
 
 }  // namespace

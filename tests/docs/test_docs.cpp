@@ -73,7 +73,6 @@ std::vector<std::string> lines_of(const std::string& text) {
     return lines;
 }
 
-bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
 std::string trim_left(const std::string& s) {
     const size_t first = s.find_first_not_of(" \t");
@@ -86,7 +85,7 @@ std::string prose(const std::string& markdown) {
     std::string out;
     bool fenced = false;
     for (const std::string& line : lines_of(markdown)) {
-        const bool fence = starts_with(trim_left(line), "```");
+        const bool fence = trim_left(line).starts_with("```");
         if (fence) fenced = !fenced;
         out += (fence || fenced) ? std::string() : line;
         out += '\n';
@@ -126,8 +125,8 @@ TEST(Docs, EveryRelativeLinkAndImageResolves) {
         const std::string text = prose(slurp(file));
         for (std::sregex_iterator it(text.begin(), text.end(), link), end; it != end; ++it) {
             std::string target = (*it)[1];
-            if (starts_with(target, "#") || starts_with(target, "http://") || starts_with(target, "https://") ||
-                starts_with(target, "mailto:"))
+            if (target.starts_with("#") || target.starts_with("http://") || target.starts_with("https://") ||
+                target.starts_with("mailto:"))
                 continue;
             target = target.substr(0, target.find('#'));
             ++checked;
@@ -218,7 +217,7 @@ std::vector<ShownCommand> shown_commands() {
         bool fenced = false, shell = false;
         for (size_t i = 0; i < lines.size(); ++i) {
             const std::string line = trim_left(lines[i]);
-            if (starts_with(line, "```")) {
+            if (line.starts_with("```")) {
                 fenced = !fenced;
                 std::string info = line.substr(3);
                 info = info.substr(0, info.find_first_of(" \t{"));
@@ -230,12 +229,12 @@ std::vector<ShownCommand> shown_commands() {
             std::string command = line;
             while (!command.empty() && command.back() == '\\' && i + 1 < lines.size())
                 command = command.substr(0, command.size() - 1) + " " + trim_left(lines[++i]);
-            if (starts_with(command, "$ ")) command = trim_left(command.substr(2));
+            if (command.starts_with("$ ")) command = trim_left(command.substr(2));
             static const std::regex environment(R"(^[A-Za-z_][A-Za-z0-9_]*=\S*\s+)");
             for (std::smatch m; std::regex_search(command, m, environment);) command = m.suffix().str();
             for (const char* dir : {"./build/", "build/"})
-                if (starts_with(command, dir)) command = command.substr(std::string(dir).size());
-            if (starts_with(command, "firsthit ") || command == "firsthit")
+                if (command.starts_with(dir)) command = command.substr(std::string(dir).size());
+            if (command.starts_with("firsthit ") || command == "firsthit")
                 commands.push_back({file, number, command});
         }
     }

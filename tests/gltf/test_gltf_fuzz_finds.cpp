@@ -12,7 +12,7 @@
 namespace fh {
 namespace {
 
-std::string error_of(const std::string& json) {
+std::string fuzz_error(const std::string& json) {
     try {
         load_gltf_from_memory(json, "fuzz.gltf", "/nonexistent-folder");
     } catch (const InputError& e) {
@@ -22,23 +22,23 @@ std::string error_of(const std::string& json) {
 }
 
 TEST(GltfFuzzFinds, NumberBeyondDoubleIsOneLineWithItsPlace) {
-    EXPECT_EQ(error_of("{\"asset\":{\"version\":\"2.0\"},\n \"scene\":1e3080}"),
+    EXPECT_EQ(fuzz_error("{\"asset\":{\"version\":\"2.0\"},\n \"scene\":1e3080}"),
               "fuzz.gltf:2:10: error: JSON: number overflow parsing '1e3080'");
 }
 
 TEST(GltfFuzzFinds, NestingDeeperThan64IsRefusedBeforeParsing) {
     const std::string deep = std::string(100000, '[') + std::string(100000, ']');
-    EXPECT_EQ(error_of("{\"asset\":{\"version\":\"2.0\"},\"extras\":" + deep + "}"),
+    EXPECT_EQ(fuzz_error("{\"asset\":{\"version\":\"2.0\"},\"extras\":" + deep + "}"),
               "fuzz.gltf:1:100: error: JSON: nested more than 64 arrays and objects deep");
     // 64 deep in all (the top object is one) is fine; brackets in strings do not count.
     const std::string ok = std::string(63, '[') + std::string(63, ']');
-    EXPECT_EQ(error_of("{\"asset\":{\"version\":\"2.0\",\"x\":\"[[[\\\"[[[\"},\"extras\":" + ok + "}"),
+    EXPECT_EQ(fuzz_error("{\"asset\":{\"version\":\"2.0\",\"x\":\"[[[\\\"[[[\"},\"extras\":" + ok + "}"),
               "fuzz.gltf: error: the file has no scene to show (no 'scenes')");
 }
 
 TEST(GltfFuzzFinds, UndecodableDataUriIsNamedShort) {
     const std::string uri = "data:applica" + std::string(5000, 'A');
-    EXPECT_EQ(error_of("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4,\"uri\":\"" + uri +
+    EXPECT_EQ(fuzz_error("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4,\"uri\":\"" + uri +
                        "\"}],\"scenes\":[{\"nodes\":[0]}],\"nodes\":[{}]}"),
               "fuzz.gltf: error: a data: uri that is not base64 of a glTF media type ('data:applica" +
                   std::string(45, 'A') + "...')");

@@ -294,7 +294,7 @@ TEST(GltfTextureTransform, BadTransformsAreRefused) {
 }
 
 // Loading json fails with one line holding phrase.
-void refused(const std::string& json, const std::string& phrase) {
+void expect_refused(const std::string& json, const std::string& phrase) {
     expect_input_error([&] { load(json); }, "t.gltf", phrase);
 }
 
@@ -314,7 +314,7 @@ TEST(GltfTextureTransform, TransformedTextureCoordinatesStayFinite) {
             surfaces({material("[1, 1, 1, 1]", transformed("{\"scale\": [1e300, 1]}"))}, {{-1, 0}},
                      {image_json(rgb_png(1, 1, 9, 9, 9))}),
         bin);
-    refused(json, "mesh 0 primitive 0: KHR_texture_transform takes TEXCOORD_0 0 past a double's range");
+    expect_refused(json, "mesh 0 primitive 0: KHR_texture_transform takes TEXCOORD_0 0 past a double's range");
 }
 
 TEST(GltfTextureTransform, ItsTexCoordReplacesTheTextureInfosWhichNeedNotExist) {
@@ -637,11 +637,11 @@ std::string textured_file(const std::vector<TextureRef>& textures, const std::ve
 
 TEST(GltfTextureBadImages, NeitherPngNorJpeg) {
     const std::string gif = "GIF89a: six bytes of signature, then anything";
-    refused(textured_file({{-1, 0}}, {image_json(gif)}), "image 0: not a PNG or JPEG image");
-    refused(textured_file({{-1, 0}}, {image_json(gif, ", \"name\": \"leaf\"")}),
+    expect_refused(textured_file({{-1, 0}}, {image_json(gif)}), "image 0: not a PNG or JPEG image");
+    expect_refused(textured_file({{-1, 0}}, {image_json(gif, ", \"name\": \"leaf\"")}),
             "image 0 ('leaf'): not a PNG or JPEG image");
     // The first bytes decide, not the mimeType.
-    refused(textured_file({{-1, 0}}, {"{\"uri\": \"data:image/png;base64," + base64("plain text, not pixels") + "\"}"}),
+    expect_refused(textured_file({{-1, 0}}, {"{\"uri\": \"data:image/png;base64," + base64("plain text, not pixels") + "\"}"}),
             "image 0: not a PNG or JPEG image");
 }
 
@@ -653,8 +653,8 @@ TEST(GltfTextureBadImages, ATruncatedPngCannotBeDecoded) {
     for (size_t i = 0; i < noise.rgb.size(); ++i) noise.rgb[i] = std::uint8_t((i * 7919u + 13u) % 251u);
     const std::string png = as_string(encode_png(noise));
     ASSERT_GT(png.size(), 100u);
-    refused(textured_file({{-1, 0}}, {image_json(png.substr(0, png.size() / 2))}), "image 0: cannot be decoded");
-    refused(textured_file({{-1, 0}}, {image_json(png.substr(0, 20))}), "image 0: cannot be decoded");
+    expect_refused(textured_file({{-1, 0}}, {image_json(png.substr(0, png.size() / 2))}), "image 0: cannot be decoded");
+    expect_refused(textured_file({{-1, 0}}, {image_json(png.substr(0, 20))}), "image 0: cannot be decoded");
     // The whole file loads.
     EXPECT_EQ(load(textured_file({{-1, 0}}, {image_json(png)})).scene.textures[0].image->width, 8);
 }
@@ -662,17 +662,17 @@ TEST(GltfTextureBadImages, ATruncatedPngCannotBeDecoded) {
 TEST(GltfTextureBadImages, AHeaderClaimingTooManyTexels) {
     // Refused from the header alone, before any pixel is allocated: 20000 a
     // side (grey), and 16384 x 4097 = 67,125,248 texels in all (RGB).
-    refused(textured_file({{-1, 0}}, {image_json(png_header(20000, 20000, 0))}),
+    expect_refused(textured_file({{-1, 0}}, {image_json(png_header(20000, 20000, 0))}),
             "image 0: 20000 x 20000 texels (the limit is 16,384 a side and 67,108,864 in all)");
-    refused(textured_file({{-1, 0}}, {image_json(png_header(16384, 4097, 2))}),
+    expect_refused(textured_file({{-1, 0}}, {image_json(png_header(16384, 4097, 2))}),
             "image 0: 16384 x 4097 texels (the limit is 16,384 a side and 67,108,864 in all)");
-    refused(textured_file({{-1, 0}}, {image_json(png_header(40000, 1, 6))}), "image 0: 40000 x 1 texels (the limit");
+    expect_refused(textured_file({{-1, 0}}, {image_json(png_header(40000, 1, 6))}), "image 0: 40000 x 1 texels (the limit");
 }
 
 TEST(GltfTextureBadImages, AnRgbaHeaderClaimingTooManyTexelsNamesTheLimit) {
     // The same 20000 x 20000 claim in RGBA, as a base colour texture with
     // alpha is: the same limit, the same message.
-    refused(textured_file({{-1, 0}}, {image_json(png_header(20000, 20000, 6))}),
+    expect_refused(textured_file({{-1, 0}}, {image_json(png_header(20000, 20000, 6))}),
             "image 0: 20000 x 20000 texels (the limit is 16,384 a side and 67,108,864 in all)");
 }
 
@@ -684,24 +684,24 @@ TEST(GltfTextureBadImages, AnImageFileThatIsNotThere) {
 
 TEST(GltfTextureBadImages, SamplersAndTexturesThatAreNotGltfs) {
     const std::string red = image_json(rgb_png(1, 1, 255, 0, 0));
-    refused(textured_file({{0, 0}}, {red}, {sampler_json(12345, kRepeat)}),
+    expect_refused(textured_file({{0, 0}}, {red}, {sampler_json(12345, kRepeat)}),
             "texture 0: wrap mode 12345 is not glTF's (10497, 33648 or 33071)");
-    refused(textured_file({{0, 0}}, {red}, {sampler_json(kRepeat, 9729)}),
+    expect_refused(textured_file({{0, 0}}, {red}, {sampler_json(kRepeat, 9729)}),
             "texture 0: wrap mode 9729 is not glTF's (10497, 33648 or 33071)");
-    refused(textured_file({{0, 0}}, {red}, {sampler_json(kRepeat, kRepeat, 9987)}),
+    expect_refused(textured_file({{0, 0}}, {red}, {sampler_json(kRepeat, kRepeat, 9987)}),
             "texture 0: magFilter 9987 is not glTF's (9728 or 9729)");
-    refused(textured_file({{-1, 5}}, {red}), "texture 0: it has no image firsthit can read");
-    refused(textured_file({{-1, -1}}, {red}), "texture 0: it has no image firsthit can read");
-    refused(textured_file({{3, 0}}, {red}, {sampler_json(kRepeat, kRepeat)}), "texture 0: sampler 3 does not exist");
+    expect_refused(textured_file({{-1, 5}}, {red}), "texture 0: it has no image firsthit can read");
+    expect_refused(textured_file({{-1, -1}}, {red}), "texture 0: it has no image firsthit can read");
+    expect_refused(textured_file({{3, 0}}, {red}, {sampler_json(kRepeat, kRepeat)}), "texture 0: sampler 3 does not exist");
     // The material's texture itself missing.
-    refused(quads_file({{-1, 1, -1, 1, 0, 0}}, surfaces({material("[1, 1, 1, 1]", tex(2))}, {{-1, 0}}, {red})),
+    expect_refused(quads_file({{-1, 1, -1, 1, 0, 0}}, surfaces({material("[1, 1, 1, 1]", tex(2))}, {{-1, 0}}, {red})),
             "texture 2 does not exist");
 }
 
 TEST(GltfTextureBadImages, ABaseColourTextureNeedsItsTexcoordSet) {
     Quad q{-1, 1, -1, 1, 0, 0};
     q.uvs = false;
-    refused(quads_file({q}, surfaces({material("[1, 1, 1, 1]", tex(0))}, {{-1, 0}}, {image_json(rgb_png(1, 1, 1, 1, 1))})),
+    expect_refused(quads_file({q}, surfaces({material("[1, 1, 1, 1]", tex(0))}, {{-1, 0}}, {image_json(rgb_png(1, 1, 1, 1, 1))})),
             "mesh 0 primitive 0: its material reads TEXCOORD_0, which it does not have");
     // Without the texture the same quad loads.
     EXPECT_NO_THROW(load(quads_file({q}, surfaces({material("[1, 1, 1, 1]")}))));
@@ -748,12 +748,12 @@ TEST(GltfVertexColors, WhatTheSpecificationForbidsIsRefused) {
     Quad q{-1, 1, -1, 1, 0, 0};
     q.colors = {1, 1, 1, 1};
     q.color_kind = "SCALAR";
-    refused(quads_file({q}, surfaces({material("[1, 1, 1, 1]")})), "mesh 0 primitive 0: COLOR_0 is not a VEC3 or VEC4");
+    expect_refused(quads_file({q}, surfaces({material("[1, 1, 1, 1]")})), "mesh 0 primitive 0: COLOR_0 is not a VEC3 or VEC4");
     q.colors = std::vector<double>(16, 255);
     q.color_kind = "VEC4";
     q.color_type = kUnsignedByte;
     q.color_normalized = false;
-    refused(quads_file({q}, surfaces({material("[1, 1, 1, 1]")})),
+    expect_refused(quads_file({q}, surfaces({material("[1, 1, 1, 1]")})),
             "mesh 0 primitive 0: COLOR_0 is not floats or normalized unsigned bytes or shorts");
 }
 

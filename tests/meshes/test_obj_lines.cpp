@@ -15,51 +15,51 @@ namespace fh {
 namespace {
 
 // The formatted error of checking `content` as an .obj, the path shown as FILE.
-std::string check(const std::string& content) {
+std::string obj_error(const std::string& content) {
     return test::file_check_error("lines.obj", content, [](const std::string& path) { check_obj_lines(path); });
 }
 
-const std::string kVertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+const std::string kObjVertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
 const std::string kOneVertex =
     "error: a line statement of one vertex, for which assimp 5.2.5 writes past the end of its vertex array "
     "(firsthit draws no lines)";
 
 TEST(ObjLines, WellFormedFilesPass) {
-    EXPECT_EQ(check(kVertices + "f 1 2 3\n"), "(no error)");
-    EXPECT_EQ(check(kVertices + "l 1 2 3\nl 2 3\nf 1 2 3\n"), "(no error)");
-    EXPECT_EQ(check(kVertices + "vt 0 0\nvn 0 0 1\nl 1/1 2/1\nl 1/1/1 2/1/1\nl 1//1 3//1\nf 1 2 3"), "(no error)");
+    EXPECT_EQ(obj_error(kObjVertices + "f 1 2 3\n"), "(no error)");
+    EXPECT_EQ(obj_error(kObjVertices + "l 1 2 3\nl 2 3\nf 1 2 3\n"), "(no error)");
+    EXPECT_EQ(obj_error(kObjVertices + "vt 0 0\nvn 0 0 1\nl 1/1 2/1\nl 1/1/1 2/1/1\nl 1//1 3//1\nf 1 2 3"), "(no error)");
     // A line joined to the next by "\": two vertices.
-    EXPECT_EQ(check(kVertices + "l 1 \\\n2\n"), "(no error)");
+    EXPECT_EQ(obj_error(kObjVertices + "l 1 \\\n2\n"), "(no error)");
     // A zero index: assimp refuses the file itself ("Invalid face index").
-    EXPECT_EQ(check(kVertices + "l 0\n"), "(no error)");
+    EXPECT_EQ(obj_error(kObjVertices + "l 0\n"), "(no error)");
 }
 
 TEST(ObjLines, OneVertexIsRefused) {
-    EXPECT_EQ(check(kVertices + "l 1\nl 1\nl 1 2 3\n"), "FILE:4:1: " + kOneVertex);
-    EXPECT_EQ(check(kVertices + "f 1 2 3\r\nl -1/1\r\n"), "FILE:5:1: " + kOneVertex);
+    EXPECT_EQ(obj_error(kObjVertices + "l 1\nl 1\nl 1 2 3\n"), "FILE:4:1: " + kOneVertex);
+    EXPECT_EQ(obj_error(kObjVertices + "f 1 2 3\r\nl -1/1\r\n"), "FILE:5:1: " + kOneVertex);
     // The statement's own line, where a "\" joins two.
-    EXPECT_EQ(check(kVertices + "l \\\n1\nl 1 2\n"), "FILE:4:1: " + kOneVertex);
+    EXPECT_EQ(obj_error(kObjVertices + "l \\\n1\nl 1 2\n"), "FILE:4:1: " + kOneVertex);
     // After "\" and a carriage return assimp skips to the next '\n' and takes
     // the character after it: "l 1 \\\r 2\n" is one vertex, "l 1 \\\r\n2" two.
-    EXPECT_EQ(check(kVertices + "l 1 \\\r 2\n"), "FILE:4:1: " + kOneVertex);
-    EXPECT_EQ(check(kVertices + "l 1 \\\r\n2\n"), "(no error)");
+    EXPECT_EQ(obj_error(kObjVertices + "l 1 \\\r 2\n"), "FILE:4:1: " + kOneVertex);
+    EXPECT_EQ(obj_error(kObjVertices + "l 1 \\\r\n2\n"), "(no error)");
     // atoi's value, stepped over by its digits: "0012" is 12, then "12"
     // again (two vertices); "12" alone is one.
-    EXPECT_EQ(check(kVertices + "l 0012\n"), "(no error)");
-    EXPECT_EQ(check(kVertices + "l 12\n"), "FILE:4:1: " + kOneVertex);
+    EXPECT_EQ(obj_error(kObjVertices + "l 0012\n"), "(no error)");
+    EXPECT_EQ(obj_error(kObjVertices + "l 12\n"), "FILE:4:1: " + kOneVertex);
 }
 
 TEST(ObjLines, ReadingPastTheLineIsRefused) {
     // "l" alone is an empty face to assimp, whatever its buffer holds beyond.
-    EXPECT_EQ(check(kVertices + "# 5\nl\n"), "(no error)");
-    EXPECT_EQ(check(kVertices + "l 1/1/1/1 2\n"),
+    EXPECT_EQ(obj_error(kObjVertices + "# 5\nl\n"), "(no error)");
+    EXPECT_EQ(obj_error(kObjVertices + "l 1/1/1/1 2\n"),
               "FILE:4:1: error: a line statement with a vertex of more than three indices, which assimp 5.2.5 "
               "reads on past its line (firsthit draws no lines)");
 }
 
 // At the loader: the 54-byte file that aborted the process in glibc's malloc.
 TEST(ObjLines, TheLoaderRefusesBeforeAssimpReads) {
-    const std::string path = test::write_temp_file("overflow.obj", kVertices + "l 1\nl 1\nl 1 2 3\n");
+    const std::string path = test::write_temp_file("overflow.obj", kObjVertices + "l 1\nl 1\nl 1 2 3\n");
     try {
         load_mesh(path);
         FAIL() << "accepted";

@@ -15,14 +15,14 @@ namespace fh {
 namespace {
 
 // The formatted error of checking `content` as a .ply, the path shown as FILE.
-std::string check(const std::string& content) {
+std::string ply_error(const std::string& content) {
     return test::file_check_error("lists.ply", content, [](const std::string& path) { check_ply_lists(path); });
 }
 
 const std::string kTriangleHeader =
     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
     "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
-const std::string kVertices = "0 0 0\n1 0 0\n0 1 0\n";
+const std::string kPlyVertices = "0 0 0\n1 0 0\n0 1 0\n";
 
 std::string le32(std::uint32_t v) {
     std::string s;
@@ -31,38 +31,38 @@ std::string le32(std::uint32_t v) {
 }
 
 TEST(PlyLists, WellFormedFilesPass) {
-    EXPECT_EQ(check(kTriangleHeader + kVertices + "3 0 1 2\n"), "(no error)");
+    EXPECT_EQ(ply_error(kTriangleHeader + kPlyVertices + "3 0 1 2\n"), "(no error)");
     // CRLF lines, and a last line with no line end.
-    std::string crlf = kTriangleHeader + kVertices + "3 0 1 2";
+    std::string crlf = kTriangleHeader + kPlyVertices + "3 0 1 2";
     for (size_t at = crlf.find('\n'); at != std::string::npos; at = crlf.find('\n', at + 2)) crlf.insert(at, "\r");
-    EXPECT_EQ(check(crlf), "(no error)");
-    EXPECT_EQ(check(kTriangleHeader + kVertices + "3 0 1 2"), "(no error)");
+    EXPECT_EQ(ply_error(crlf), "(no error)");
+    EXPECT_EQ(ply_error(kTriangleHeader + kPlyVertices + "3 0 1 2"), "(no error)");
     // A polygon of 200 corners: a list as long as its line allows.
     std::string polygon = "ply\nformat ascii 1.0\nelement face 1\nproperty list ushort int vertex_indices\nend_header\n200";
     for (int i = 0; i < 200; ++i) polygon += " " + std::to_string(i);
-    EXPECT_EQ(check(polygon + "\n"), "(no error)");
+    EXPECT_EQ(ply_error(polygon + "\n"), "(no error)");
     // Binary, little-endian: three float vertices, one face.
     std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
                          "property float y\nproperty float z\nelement face 1\n"
                          "property list uchar uint vertex_indices\nend_header\n";
     binary += std::string(36, '\0') + '\3' + le32(0) + le32(1) + le32(2);
-    EXPECT_EQ(check(binary), "(no error)");
+    EXPECT_EQ(ply_error(binary), "(no error)");
 }
 
 TEST(PlyLists, AsciiLengthsBeyondTheirLine) {
     // Fuzzing found it: a uchar length that assimp reads as 32 bits (a 34 GB
     // list); 1,500,000,000 took 30 s and 11.7 GB.
-    EXPECT_EQ(check(kTriangleHeader + kVertices + "4294967289 0 1 2\n"),
+    EXPECT_EQ(ply_error(kTriangleHeader + kPlyVertices + "4294967289 0 1 2\n"),
               "FILE:13:1: error: a PLY list of 4294967289 values, but only 6 bytes follow on its line (a corrupt "
               "file?)");
     // A signed length of -1 is 4,294,967,295 to assimp.
     std::string signed_length = kTriangleHeader;
     signed_length.replace(signed_length.find("uchar int"), 9, "int int");
-    EXPECT_EQ(check(signed_length + kVertices + "-1 0 1 2\n"),
+    EXPECT_EQ(ply_error(signed_length + kPlyVertices + "-1 0 1 2\n"),
               "FILE:13:1: error: a PLY list of 4294967295 values, but only 6 bytes follow on its line (a corrupt "
               "file?)");
     // Four values where three follow: short, but not beyond the line.
-    EXPECT_EQ(check(kTriangleHeader + kVertices + "4 0 1 2\n"), "(no error)");
+    EXPECT_EQ(ply_error(kTriangleHeader + kPlyVertices + "4 0 1 2\n"), "(no error)");
 }
 
 TEST(PlyLists, ReadWhereAssimpReads) {
@@ -73,7 +73,7 @@ TEST(PlyLists, ReadWhereAssimpReads) {
         "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nprxperty float z\n"
         "element face 4\nproperty list uchar int vertex_indices\nend_header\n5 0 0\n1nan0\n0 1 0\n0 0 1\n"
         "3 0 2 1%=" + std::string(1, '\0') + "42949672953da-e3 1 2 3\n";
-    EXPECT_EQ(check(found),
+    EXPECT_EQ(ply_error(found),
               "FILE:15:1: error: a PLY list of 4294967289 values, but only 11 bytes follow on its line (a corrupt "
               "file?)");
     // An element of a name assimp does not know has its count read from
@@ -81,7 +81,7 @@ TEST(PlyLists, ReadWhereAssimpReads) {
     const std::string unknown =
         "ply\nformat ascii 1.0\nelement normals 1\nproperty float w\nelement face 1\n"
         "property list uint int vertex_indices\nend_header\n4000000000\n3 0 1 2\n";
-    EXPECT_EQ(check(unknown),
+    EXPECT_EQ(ply_error(unknown),
               "FILE:8:1: error: a PLY list of 4000000000 values, but only 0 bytes follow on its line (a corrupt "
               "file?)");
     // A line that runs out of values before its properties do: assimp
@@ -89,12 +89,12 @@ TEST(PlyLists, ReadWhereAssimpReads) {
     const std::string short_line =
         "ply\nformat ascii 1.0\nelement face 2\nproperty uchar flags\nproperty list uchar int vertex_indices\n"
         "end_header\n0 3 1 2 3 4294967295 4294967295\n7\n";
-    EXPECT_EQ(check(short_line),
+    EXPECT_EQ(ply_error(short_line),
               "FILE:8:2: error: a PLY line holds values for only 1 of its 2 properties; assimp would read the "
               "others from an earlier line");
     // A name read as a count ("element 4000000000 1"), for an element assimp skips line by line.
     const std::string named = "ply\nformat ascii 1.0\nelement 4000000000 1\nproperty float x\nend_header\n1\n";
-    EXPECT_EQ(check(named), "FILE: error: assimp 5.2.5 would read 4000000000 instances of a PLY element from a "
+    EXPECT_EQ(ply_error(named), "FILE: error: assimp 5.2.5 would read 4000000000 instances of a PLY element from a "
                             "file of " + std::to_string(named.size()) + " bytes");
 }
 
@@ -102,26 +102,26 @@ TEST(PlyLists, BinaryLengthsBeyondTheFile) {
     const std::string header = "ply\nformat binary_little_endian 1.0\nelement face 1\n"
                                "property list uint uint vertex_indices\nend_header\n";
     const std::string after_length = std::to_string(header.size() + 4);
-    EXPECT_EQ(check(header + le32(0xffffffffu) + le32(0) + le32(1) + le32(2)),
+    EXPECT_EQ(ply_error(header + le32(0xffffffffu) + le32(0) + le32(1) + le32(2)),
               "FILE: error: a binary PLY list of 4294967295 values at byte " + after_length +
                   ", but only 12 bytes follow (a corrupt or truncated file?)");
     // Cut short: past its end assimp reads the line ends its buffer was
     // filled with (a length of 0x0a0a0a0a).
-    EXPECT_EQ(check(header + le32(3) + le32(0) + le32(1) + le32(2)), "(no error)");
-    EXPECT_EQ(check(header + le32(3) + le32(0) + le32(1)),
+    EXPECT_EQ(ply_error(header + le32(3) + le32(0) + le32(1) + le32(2)), "(no error)");
+    EXPECT_EQ(ply_error(header + le32(3) + le32(0) + le32(1)),
               "FILE: error: a binary PLY list of 3 values at byte " + after_length +
                   ", but only 8 bytes follow (a corrupt or truncated file?)");
     // Cut before the second face's length: assimp takes the filler for it,
     // 0x0a0a0a0a values (1.3 GB).
     std::string two_faces = header;
     two_faces.replace(two_faces.find("face 1"), 6, "face 2");
-    EXPECT_EQ(check(two_faces + le32(3) + le32(0) + le32(1) + le32(2) + std::string(2, '\0')),
+    EXPECT_EQ(ply_error(two_faces + le32(3) + le32(0) + le32(1) + le32(2) + std::string(2, '\0')),
               "FILE: error: the binary PLY data ends before its elements do (a truncated file?)");
     const std::string two = "ply\nformat binary_big_endian 1.0\nelement face 2\n"
                             "property list uchar int vertex_indices\nend_header\n";
     std::string big = two + '\3' + std::string("\0\0\0\0\0\0\0\1\0\0\0\2", 12);
-    EXPECT_EQ(check(big), "FILE: error: the binary PLY data ends before its elements do (a truncated file?)");
-    EXPECT_EQ(check(big + '\1' + std::string("\0\0\0\7", 4)), "(no error)");
+    EXPECT_EQ(ply_error(big), "FILE: error: the binary PLY data ends before its elements do (a truncated file?)");
+    EXPECT_EQ(ply_error(big + '\1' + std::string("\0\0\0\7", 4)), "(no error)");
 }
 
 // A binary header of exactly `length` bytes: comment lines fill it out.
@@ -144,13 +144,13 @@ TEST(PlyLists, BinaryDataAtTheBufferEnd) {
     const std::string face = '\3' + le32(0) + le32(1) + le32(2);
     constexpr std::size_t kMiB = std::size_t(1) << 20;
     ASSERT_EQ(binary_header_of(kMiB).size(), kMiB);
-    EXPECT_EQ(check(binary_header_of(kMiB) + face),
+    EXPECT_EQ(ply_error(binary_header_of(kMiB) + face),
               "FILE: error: the binary PLY header ends at byte 1048576, the end of assimp 5.2.5's 1 MiB buffer, "
               "which makes its reader crash");
     // A byte either way, and the data is read from the buffer or the next block.
-    EXPECT_EQ(check(binary_header_of(kMiB - 1) + face), "(no error)");
-    EXPECT_EQ(check(binary_header_of(kMiB + 1) + face), "(no error)");
-    EXPECT_EQ(check(binary_header_of(kMiB - 1) + face.substr(0, 9)),
+    EXPECT_EQ(ply_error(binary_header_of(kMiB - 1) + face), "(no error)");
+    EXPECT_EQ(ply_error(binary_header_of(kMiB + 1) + face), "(no error)");
+    EXPECT_EQ(ply_error(binary_header_of(kMiB - 1) + face.substr(0, 9)),
               "FILE: error: a binary PLY list of 3 values at byte " + std::to_string(kMiB) +
                   ", but only 8 bytes follow (a corrupt or truncated file?)");
 }

@@ -31,7 +31,7 @@ template <typename T>
 class SelfIntersection : public ::testing::Test {};
 TYPED_TEST_SUITE(SelfIntersection, Scalars);
 
-constexpr int kSize = 64;
+constexpr int kImageSide = 64;
 
 struct Setup {
     double scale;
@@ -78,7 +78,7 @@ Scene scene(const Setup& st, bool plane, bool sphere, bool glazed) {
 Camera view(const Setup& st) {
     const dvec3 eye = st.shift + st.scale * dvec3(0.5, -6, 4);
     const dvec3 at = st.shift + st.scale * dvec3(0, 0, 0.8);
-    return camera(Projection::perspective, eye, at - eye, {0, 0, 1}, kSize, 25);
+    return camera(Projection::perspective, eye, at - eye, {0, 0, 1}, kImageSide, 25);
 }
 
 TYPED_TEST(SelfIntersection, NoRayFindsTheSurfaceItLeaves) {
@@ -90,8 +90,8 @@ TYPED_TEST(SelfIntersection, NoRayFindsTheSurfaceItLeaves) {
         const CameraRays<T> rays(view(st));
         const Vec3<T> lights[2] = {-Vec3<T>(kSteep), -Vec3<T>(kGrazing)};
         int sphere_pixels = 0, plane_pixels = 0, shadow_acne = 0, reflection_acne = 0, shadow_rays = 0;
-        for (int y = 0; y < kSize; ++y) {
-            for (int x = 0; x < kSize; ++x) {
+        for (int y = 0; y < kImageSide; ++y) {
+            for (int x = 0; x < kImageSide; ++x) {
                 const Ray<T> ray = rays.generate(T(x + 0.5), T(y + 0.5));
                 const T ts = sphere.intersect(ray, T(0), kInfinity<T>);
                 const T tp = plane.intersect(ray, T(0), ts);

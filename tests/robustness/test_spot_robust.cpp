@@ -15,7 +15,7 @@ namespace {
 
 using namespace fh::robust;
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPiSpot = 3.14159265358979323846;
 
 template <typename T>
 class SpotRobust : public ::testing::Test {};
@@ -49,13 +49,13 @@ double expected(double I, double theta, double max_angle, double d) {
 TYPED_TEST(SpotRobust, ExactlyAtTheConeEdgeIsZeroAndContinuous) {
     using T = TypeParam;
     const double tol = std::is_same_v<T, float> ? 2e-3 : 1e-7;  // in angle, radians
-    for (const double max_angle : {kPi / 4, kPi / 2, 2.0, kPi}) {
+    for (const double max_angle : {kPiSpot / 4, kPiSpot / 2, 2.0, kPiSpot}) {
         const auto s = spot<T>(max_angle);
         // Walk across the edge in steps of 1e-4 rad: the intensity falls
         // linearly to 0 and stays 0, with no jump anywhere.
         double previous = -1;
         for (int k = -20; k <= 20; ++k) {
-            const double theta = std::min(kPi, max_angle + k * 1e-4);
+            const double theta = std::min(kPiSpot, max_angle + k * 1e-4);
             const auto r = s.radiance_at(at_angle(s, theta, 5));
             ASSERT_TRUE(std::isfinite(r.intensity));
             ASSERT_TRUE(is_finite(r.to_light));
@@ -75,7 +75,7 @@ TYPED_TEST(SpotRobust, ExactlyAtTheConeEdgeIsZeroAndContinuous) {
 
 TYPED_TEST(SpotRobust, AtAndNearTheLightsPosition) {
     using T = TypeParam;
-    const auto s = spot<T>(2 * kPi, {1, -2, 0.5}, {1.25, -3.5, 7});
+    const auto s = spot<T>(2 * kPiSpot, {1, -2, 0.5}, {1.25, -3.5, 7});
     const auto at = s.radiance_at(s.position);
     EXPECT_EQ(at.intensity, T(0));
     EXPECT_TRUE(is_finite(at.to_light));
@@ -84,7 +84,7 @@ TYPED_TEST(SpotRobust, AtAndNearTheLightsPosition) {
     // also for a light at the origin, where d^2 can be a subnormal number
     // (1e-40 in float, 1e-320 in double) and I / d^2 would overflow.
     for (const dvec3 pos : {dvec3(s.position), dvec3(0)}) {
-        auto near = spot<T>(2 * kPi, {1, -2, 0.5}, pos);
+        auto near = spot<T>(2 * kPiSpot, {1, -2, 0.5}, pos);
         double previous = 0;
         for (const double d : {1e-3, 1e-6, 1e-9, 1e-15, 1e-20, 1e-30, 1e-160, 1e-170, 1e-300}) {
             const auto r = near.radiance_at(near.position + Vec3<T>(T(d), T(0), T(0)));
@@ -111,7 +111,7 @@ TYPED_TEST(SpotRobust, CosinesRoundingPastOne) {
     int above_one = 0;
     for (int i = 0; i < 20000; ++i) {
         const dvec3 axis = random_unit(rng);
-        for (const double max_angle : {kPi / 4, kPi, 2 * kPi}) {
+        for (const double max_angle : {kPiSpot / 4, kPiSpot, 2 * kPiSpot}) {
             const auto s = spot<T>(max_angle, axis, {0.5, -0.25, 3});
             const double d = 1 + 10 * (i % 7);
             for (const double sign : {1.0, -1.0}) {  // ahead on the axis and behind the light
@@ -121,7 +121,7 @@ TYPED_TEST(SpotRobust, CosinesRoundingPastOne) {
                 if (std::abs(-glm::dot(delta / len, s.axis)) > T(1)) ++above_one;
                 const auto r = s.radiance_at(p);
                 ASSERT_TRUE(std::isfinite(r.intensity));
-                const double theta = sign > 0 ? 0 : kPi;
+                const double theta = sign > 0 ? 0 : kPiSpot;
                 const double want = expected(2.2, theta, max_angle, d);
                 const double slope = 2.2 / (d * d) / max_angle;  // per radian
                 // acos near 0 and pi is sensitive: sqrt(2 eps) rad of error.
@@ -139,18 +139,18 @@ TYPED_TEST(SpotRobust, WideConesAreContinuousAllAround) {
     // max_angle >= pi: every direction lit; at theta = pi (straight behind)
     // the intensity is I (1 - pi/max_angle) / d^2, and the whole sweep from 0
     // to pi is continuous.
-    for (const double max_angle : {kPi, kPi + 1e-9, 4.0, 2 * kPi, 100.0}) {
+    for (const double max_angle : {kPiSpot, kPiSpot + 1e-9, 4.0, 2 * kPiSpot, 100.0}) {
         const auto s = spot<T>(max_angle, {0.2, 0.1, -1});
         double previous = -1;
         for (int k = 0; k <= 2000; ++k) {
-            const double theta = kPi * k / 2000;
+            const double theta = kPiSpot * k / 2000;
             const auto r = s.radiance_at(at_angle(s, theta, 3));
             ASSERT_TRUE(std::isfinite(r.intensity));
             const double want = expected(2.2, theta, max_angle, 3);
             EXPECT_NEAR(double(r.intensity), want, 2.2 / 9 * 2e-3 / max_angle + 1e-5 * want)
                 << "max_angle " << max_angle << " theta " << theta;
             if (previous >= 0)
-                EXPECT_LE(std::abs(double(r.intensity) - previous), 2.2 / 9 * (kPi / 2000 + 2e-3) / max_angle);
+                EXPECT_LE(std::abs(double(r.intensity) - previous), 2.2 / 9 * (kPiSpot / 2000 + 2e-3) / max_angle);
             previous = double(r.intensity);
         }
     }
@@ -160,7 +160,7 @@ TYPED_TEST(SpotRobust, WideConesAreContinuousAllAround) {
 // some placed on a surface, renders with no non-finite sample.
 TYPED_TEST(SpotRobust, RenderedSpotsAreFinite) {
     using T = TypeParam;
-    for (const double max_angle : {1e-6, kPi / 4, kPi, 2 * kPi}) {
+    for (const double max_angle : {1e-6, kPiSpot / 4, kPiSpot, 2 * kPiSpot}) {
         for (const dvec3 pos : {dvec3(0, 0, 10), dvec3(0, 0, -1), dvec3(-3, 0, 1), dvec3(-6, 6, 5)}) {
             Scene s;
             const int m = add_material(s, "m", material({130, 130, 130}, 0.1, 0.5, 10.5, 100, true, 0.05));

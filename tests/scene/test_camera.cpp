@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "scene/camera.h"
+#include "support/expect_vec.h"
 
 namespace fh {
 namespace {
@@ -19,20 +20,16 @@ Camera report_camera(Projection p) {
     return c;
 }
 
-void expect_near(const dvec3& a, const dvec3& b, double tol) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
-}
+using test::expect_vec_near;
 
 TEST(Camera, ReportBasis) {
     // w = normalize(-(0,2,-1)) = (0,-2,1)/sqrt5; u = normalize(z x w) = (1,0,0);
     // v = w x u = (0,1,2)/sqrt5.
     const CameraBasis b = camera_basis({0, 2, -1}, {0, 0, 1});
     const double s5 = std::sqrt(5.0);
-    expect_near(b.w, {0, -2 / s5, 1 / s5}, 1e-15);
-    expect_near(b.u, {1, 0, 0}, 1e-15);
-    expect_near(b.v, {0, 1 / s5, 2 / s5}, 1e-15);
+    expect_vec_near(b.w, {0, -2 / s5, 1 / s5}, 1e-15);
+    expect_vec_near(b.u, {1, 0, 0}, 1e-15);
+    expect_vec_near(b.v, {0, 1 / s5, 2 / s5}, 1e-15);
     EXPECT_FALSE(b.up_was_parallel);
 }
 
@@ -40,14 +37,14 @@ TEST(Camera, PerspectiveCornerAndCentreRays) {
     const CameraRays<double> rays(report_camera(Projection::perspective));
     // Pixel (0,0): x = -9.9875, y = 9.9875; dir = normalize(-10w + x u + y v).
     Ray<double> r = rays.generate(0.5, 0.5);
-    expect_near(r.origin, {2, -10, 10}, 0);
-    expect_near(r.direction, {-0.5771094055816303, 0.7749195522760243, 0.2577681545294987}, 1e-12);
+    expect_vec_near(r.origin, {2, -10, 10}, 0);
+    expect_vec_near(r.direction, {-0.5771094055816303, 0.7749195522760243, 0.2577681545294987}, 1e-12);
     // Pixel (799,799): x = 9.9875, y = -9.9875.
     r = rays.generate(799.5, 799.5);
-    expect_near(r.direction, {0.5771094055816303, 0.25873720774201564, -0.7745965345385186}, 1e-12);
+    expect_vec_near(r.direction, {0.5771094055816303, 0.25873720774201564, -0.7745965345385186}, 1e-12);
     // Pixel (400,400): x = 0.0125, y = -0.0125, just right of and below the centre.
     r = rays.generate(400.5, 400.5);
-    expect_near(r.direction, {0.001249998046879684, 0.8938667773397924, -0.44833092897217863}, 1e-12);
+    expect_vec_near(r.direction, {0.001249998046879684, 0.8938667773397924, -0.44833092897217863}, 1e-12);
 }
 
 TEST(Camera, OrthographicCornerAndCentreRays) {
@@ -55,18 +52,18 @@ TEST(Camera, OrthographicCornerAndCentreRays) {
     const double s5 = std::sqrt(5.0);
     Ray<double> r = rays.generate(0.5, 0.5);
     // origin = (2,-10,10) + x u + y v with x = -9.9875, y = 9.9875.
-    expect_near(r.origin, {-7.9875, -5.53345421494417, 18.93309157011166}, 1e-12);
-    expect_near(r.direction, {0, 2 / s5, -1 / s5}, 1e-15);
+    expect_vec_near(r.origin, {-7.9875, -5.53345421494417, 18.93309157011166}, 1e-12);
+    expect_vec_near(r.direction, {0, 2 / s5, -1 / s5}, 1e-15);
     // The image centre (400, 400 as a continuous coordinate) is the view point.
     r = rays.generate(400, 400);
-    expect_near(r.origin, {2, -10, 10}, 1e-12);
+    expect_vec_near(r.origin, {2, -10, 10}, 1e-12);
 }
 
 TEST(Camera, WideImageWidensTheViewNotTheHeight) {
     Camera c = report_camera(Projection::orthographic);
     c.width = 1600;  // half_width = 20, half_height stays 10
     const CameraRays<double> rays(c);
-    expect_near(rays.generate(0, 800).origin - rays.generate(1600, 800).origin, {-40, 0, 0}, 1e-12);
+    expect_vec_near(rays.generate(0, 800).origin - rays.generate(1600, 800).origin, {-40, 0, 0}, 1e-12);
 }
 
 TEST(Camera, UpParallelToViewUsesTheLeastAlignedAxis) {
@@ -74,9 +71,9 @@ TEST(Camera, UpParallelToViewUsesTheLeastAlignedAxis) {
     // axes least aligned with w = +z), so u = x cross w = (0,-1,0).
     const CameraBasis b = camera_basis({0, 0, -1}, {0, 0, 1});
     EXPECT_TRUE(b.up_was_parallel);
-    expect_near(b.w, {0, 0, 1}, 0);
-    expect_near(b.u, {0, -1, 0}, 1e-15);
-    expect_near(b.v, {1, 0, 0}, 1e-15);
+    expect_vec_near(b.w, {0, 0, 1}, 0);
+    expect_vec_near(b.u, {0, -1, 0}, 1e-15);
+    expect_vec_near(b.v, {1, 0, 0}, 1e-15);
     // The rays are finite everywhere.
     Camera c = report_camera(Projection::perspective);
     c.look_at = {0, 0, -1};

@@ -21,17 +21,17 @@ namespace {
 
 using test::write_temp_file;
 
-const std::string kCamera =
+const std::string kInputCamera =
     "cameras:\n"
     "  cam: {type: perspective, width: 10, height: 10, view_point: [0, 0, 5], look_at: [0, 0, -1],\n"
     "        up: [0, 1, 0], projection_distance: 1}\n";
 
-std::string scene_error(const std::string& text) { return test::scene_error(text, "input.yaml"); }
+std::string input_error(const std::string& text) { return test::scene_error(text, "input.yaml"); }
 using test::error_of_file;
 
 TEST(InputFiles, EmptyFile) {
-    EXPECT_EQ(scene_error(""), "FILE: error: empty scene file");
-    EXPECT_EQ(scene_error("\n\n   \n"), "FILE: error: empty scene file");
+    EXPECT_EQ(input_error(""), "FILE: error: empty scene file");
+    EXPECT_EQ(input_error("\n\n   \n"), "FILE: error: empty scene file");
 }
 
 TEST(InputFiles, DirectoryGivenAsFile) {
@@ -46,10 +46,10 @@ TEST(InputFiles, DeviceOrPipeIsNotRead) {
 
 TEST(InputFiles, FileOfSeveralMegabytesIsRefusedUnread) {
     // 20 MB of valid YAML: refused by its size, before parsing.
-    std::string text = kCamera;
+    std::string text = kInputCamera;
     while (text.size() < 20'000'000) text += "# padding padding padding padding padding padding padding\n";
     const auto start = std::chrono::steady_clock::now();
-    EXPECT_EQ(scene_error(text), "FILE: error: file too large: " + std::to_string(text.size()) +
+    EXPECT_EQ(input_error(text), "FILE: error: file too large: " + std::to_string(text.size()) +
                                      " bytes (the limit is 16777216 bytes, 16 MiB)");
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
     EXPECT_THROW(load_scene_from_string(text, "x.yaml"), InputError);
@@ -57,39 +57,39 @@ TEST(InputFiles, FileOfSeveralMegabytesIsRefusedUnread) {
 
 TEST(InputFiles, JustUnderTheLimitLoads) {
     // Exactly 16 MiB loads; one byte more does not.
-    std::string text = kCamera;
+    std::string text = kInputCamera;
     const std::string pad = "# padding\n";
     while (text.size() + pad.size() <= kMaxInputBytes) text += pad;
     text += std::string(kMaxInputBytes - text.size() - 1, '#') + "\n";
     ASSERT_EQ(text.size(), kMaxInputBytes);
     const Scene s = load_scene(write_temp_file("big_ok.yaml", text)).scene;
     EXPECT_EQ(s.cameras.size(), 1u);
-    EXPECT_EQ(scene_error(text + "\n"), "FILE: error: file too large: 16777217 bytes (the limit is 16777216 bytes, 16 MiB)");
+    EXPECT_EQ(input_error(text + "\n"), "FILE: error: file too large: 16777217 bytes (the limit is 16777216 bytes, 16 MiB)");
 }
 
 TEST(InputFiles, BinaryFile) {
     // A PNG's first bytes, and a NUL inside otherwise valid text.
-    EXPECT_EQ(scene_error(std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16)),
+    EXPECT_EQ(input_error(std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16)),
               "FILE:1:1: error: not UTF-8 text: byte 0x89 (scene and movie files are UTF-8 text)");
-    EXPECT_EQ(scene_error(kCamera + std::string("render: {max_depth: 1\0}\n", 24)),
+    EXPECT_EQ(input_error(kInputCamera + std::string("render: {max_depth: 1\0}\n", 24)),
               "FILE:4:22: error: binary data, not text: control byte 0x00 (scene and movie files are UTF-8 text)");
-    EXPECT_EQ(scene_error("a: \x1b[31m\n"),
+    EXPECT_EQ(input_error("a: \x1b[31m\n"),
               "FILE:1:4: error: binary data, not text: control byte 0x1b (scene and movie files are UTF-8 text)");
 }
 
 TEST(InputFiles, NotUtf8) {
-    EXPECT_EQ(scene_error("# caf\xe9 in Latin-1\n" + kCamera),
+    EXPECT_EQ(input_error("# caf\xe9 in Latin-1\n" + kInputCamera),
               "FILE:1:6: error: not UTF-8 text: byte 0xe9 (scene and movie files are UTF-8 text)");
     // Overlong form of '/', and a UTF-16 surrogate.
-    EXPECT_EQ(scene_error("a: \xc0\xaf\n"),
+    EXPECT_EQ(input_error("a: \xc0\xaf\n"),
               "FILE:1:4: error: not UTF-8 text: byte 0xc0 (scene and movie files are UTF-8 text)");
-    EXPECT_EQ(scene_error("a: \xed\xa0\x80\n"),
+    EXPECT_EQ(input_error("a: \xed\xa0\x80\n"),
               "FILE:1:4: error: not UTF-8 text: byte 0xed (scene and movie files are UTF-8 text)");
 }
 
 TEST(InputFiles, Utf8TextIsFine) {
     const Scene s = load_scene(write_temp_file("utf8.yaml", "\xef\xbb\xbf# caf\xc3\xa9 \xe2\x9c\x93 \xf0\x9f\x8e\xa5\r\n" +
-                                                                kCamera + "materials:\n  \xc3\xa9t\xc3\xa9: {color: [1, 2, 3],"
+                                                                kInputCamera + "materials:\n  \xc3\xa9t\xc3\xa9: {color: [1, 2, 3],"
                                                                           " ambient: 0, diffuse: 0, specular: 0, phong_exponent: 1}\n")).scene;
     ASSERT_EQ(s.material_names.size(), 1u);
     EXPECT_EQ(s.material_names[0], "\xc3\xa9t\xc3\xa9");
@@ -98,30 +98,30 @@ TEST(InputFiles, Utf8TextIsFine) {
 TEST(InputFiles, NestedThousandsDeep) {
     // Flow style, block sequences on one line, and block maps: all refused
     // at the first level past the limit, without deep recursion.
-    EXPECT_EQ(scene_error("a: " + std::string(5000, '[') + std::string(5000, ']') + "\n"),
+    EXPECT_EQ(input_error("a: " + std::string(5000, '[') + std::string(5000, ']') + "\n"),
               "FILE:1:67: error: maps and lists nested more than 64 levels deep");
-    EXPECT_EQ(scene_error("a: " + std::string(100000, '{') + "\n"),
+    EXPECT_EQ(input_error("a: " + std::string(100000, '{') + "\n"),
               "FILE:1:67: error: maps and lists nested more than 64 levels deep");
     std::string dashes;
     for (int i = 0; i < 3000; ++i) dashes += "- ";
-    EXPECT_EQ(scene_error(dashes + "x\n"), "FILE:1:129: error: maps and lists nested more than 64 levels deep");
+    EXPECT_EQ(input_error(dashes + "x\n"), "FILE:1:129: error: maps and lists nested more than 64 levels deep");
     std::string block;
     for (int i = 0; i < 200; ++i) block += std::string(size_t(i), ' ') + "k:\n";
-    EXPECT_EQ(scene_error(block), "FILE:65:65: error: maps and lists nested more than 64 levels deep");
+    EXPECT_EQ(input_error(block), "FILE:65:65: error: maps and lists nested more than 64 levels deep");
 }
 
 TEST(InputFiles, NestingUpToTheLimitIsParsed) {
     // The top-level map is level 1: 63 brackets inside it are fine (and then
     // the key is unknown); 64 are one too many.
-    EXPECT_EQ(scene_error("x: " + std::string(63, '[') + std::string(63, ']') + "\n"),
+    EXPECT_EQ(input_error("x: " + std::string(63, '[') + std::string(63, ']') + "\n"),
               "FILE:1:1: error: unknown key 'x' in scene");
-    EXPECT_EQ(scene_error("x: " + std::string(64, '[') + std::string(64, ']') + "\n"),
+    EXPECT_EQ(input_error("x: " + std::string(64, '[') + std::string(64, ']') + "\n"),
               "FILE:1:67: error: maps and lists nested more than 64 levels deep");
 }
 
 TEST(InputFiles, SeveralDocuments) {
-    EXPECT_EQ(scene_error(kCamera + "---\n" + kCamera), "FILE:4:1: error: expected a single yaml document");
-    EXPECT_EQ(scene_error(kCamera + "---\n"), "FILE:4:1: error: expected a single yaml document");
+    EXPECT_EQ(input_error(kInputCamera + "---\n" + kInputCamera), "FILE:4:1: error: expected a single yaml document");
+    EXPECT_EQ(input_error(kInputCamera + "---\n"), "FILE:4:1: error: expected a single yaml document");
 }
 
 TEST(InputFiles, AliasesAreNotExpanded) {
@@ -133,15 +133,15 @@ TEST(InputFiles, AliasesAreNotExpanded) {
         for (int k = 1; k < 10; ++k) text += ", " + prev;
         text += "]\n";
     }
-    EXPECT_EQ(scene_error(text), "FILE:1:1: error: unknown key 'a0' in scene");
+    EXPECT_EQ(input_error(text), "FILE:1:1: error: unknown key 'a0' in scene");
 }
 
 TEST(InputFiles, MessagesAreOneShortLine) {
     // A value with a line break and a control character (YAML escapes),
     // and a name of 100 kB: the message stays one line and short.
-    EXPECT_EQ(scene_error("cameras:\n  c: {type: \"persp\\nective\\x07\"}\n"),
+    EXPECT_EQ(input_error("cameras:\n  c: {type: \"persp\\nective\\x07\"}\n"),
               "FILE:2:13: error: unknown camera type 'persp\\x0aective\\x07' (did you mean 'perspective'?)");
-    const std::string message = scene_error("cameras:\n  c: {type: " + std::string(100000, 'p') + "}\n");
+    const std::string message = input_error("cameras:\n  c: {type: " + std::string(100000, 'p') + "}\n");
     EXPECT_LT(message.size(), 500u);
     EXPECT_EQ(message.find('\n'), std::string::npos);
     EXPECT_EQ(message.rfind("FILE:2:13: error: unknown camera type 'ppp", 0), 0u) << message;
@@ -154,7 +154,7 @@ TEST(InputFiles, LongNamesGetNoQuadraticSuggestion) {
     const std::string defined(1000, 'm'), used = std::string(400000, 'm') + "n";
     const auto start = std::chrono::steady_clock::now();
     const std::string message =
-        scene_error(kCamera + "materials:\n  " + defined +
+        input_error(kInputCamera + "materials:\n  " + defined +
                     ": {color: [1, 1, 1], ambient: 0, diffuse: 0, specular: 0, phong_exponent: 1}\n"
                     "surfaces:\n  - {type: sphere, center: [0, 0, 0], radius: 1, material: " + used + "}\n");
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
@@ -166,11 +166,11 @@ TEST(InputFiles, LongNamesGetNoQuadraticSuggestion) {
 TEST(InputFiles, ManyKeysAreCheckedInLinearTime) {
     // 60000 names in one map, the last one repeated: found without comparing
     // every pair (which took seconds).
-    std::string text = kCamera + "lights:\n";
+    std::string text = kInputCamera + "lights:\n";
     for (int i = 0; i < 60000; ++i) text += "  l" + std::to_string(i) + ": 0\n";
     text += "  l7: 0\n";
     const auto start = std::chrono::steady_clock::now();
-    EXPECT_EQ(scene_error(text), "FILE:60005:3: error: duplicate key 'l7' in 'lights'");
+    EXPECT_EQ(input_error(text), "FILE:60005:3: error: duplicate key 'l7' in 'lights'");
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
 }
 
@@ -198,9 +198,9 @@ std::string regression(const std::string& name) {
 TEST(FuzzRegressions, StrayCommaNoLongerHangsTheYamlParser) {
     // yaml-cpp 0.7 loops forever (allocating) on a ',' that cannot start a
     // value (jbeder/yaml-cpp#1040); the loader stops at the second document.
-    EXPECT_EQ(scene_error(","), "FILE:1:1: error: invalid yaml: unexpected ','");
-    EXPECT_EQ(scene_error("- a\n, b\n"), "FILE:2:1: error: invalid yaml: unexpected ','");
-    EXPECT_EQ(scene_error("--- ,\n"), "FILE:1:5: error: invalid yaml: unexpected ','");
+    EXPECT_EQ(input_error(","), "FILE:1:1: error: invalid yaml: unexpected ','");
+    EXPECT_EQ(input_error("- a\n, b\n"), "FILE:2:1: error: invalid yaml: unexpected ','");
+    EXPECT_EQ(input_error("--- ,\n"), "FILE:1:5: error: invalid yaml: unexpected ','");
     EXPECT_EQ(error_of_file(regression("scene-timeout-stray-comma.yaml")),
               "FILE:3:4: error: invalid yaml: unexpected ','");
     const std::string movie = regression("movie-timeout-comma-at-top-level.yaml");

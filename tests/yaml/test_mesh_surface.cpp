@@ -8,11 +8,13 @@
 #include "render/render.h"
 #include "yaml/scene_loader.h"
 #include "yaml/scene_error.h"
+#include "support/expect_vec.h"
 #include "test_util.h"
 
 namespace fh {
 namespace {
 
+using test::expect_vec_near;
 using test::write_temp_file;
 
 const std::string kHead =
@@ -35,11 +37,6 @@ void write_mesh() {
     write_temp_file("meshes/tri.off", "OFF\n4 2 0\n1 0 0\n0 1 0\n0 0 1\n0 0 0\n3 0 1 2\n3 0 0 3\n");
 }
 
-void expect_near(const dvec3& got, const dvec3& want) {
-    EXPECT_NEAR(got.x, want.x, 1e-12);
-    EXPECT_NEAR(got.y, want.y, 1e-12);
-    EXPECT_NEAR(got.z, want.z, 1e-12);
-}
 
 TEST(MeshSurface, ScaledThenRotatedThenMovedByHand) {
     write_mesh();
@@ -50,11 +47,11 @@ TEST(MeshSurface, ScaledThenRotatedThenMovedByHand) {
         "  - {type: mesh, file: meshes/tri.off, material: grey,\n"
         "     transform: {scale: 2, rotate: {axis: [0, 0, 3], degrees: 90}, translate: [1, 2, 3]}}\n")).scene;
     ASSERT_EQ(s.triangles.size(), 1u);
-    expect_near(s.triangles[0].v0, {1, 4, 3});
-    expect_near(s.triangles[0].v1, {-1, 2, 3});
-    expect_near(s.triangles[0].v2, {1, 2, 5});
+    expect_vec_near(s.triangles[0].v0, {1, 4, 3});
+    expect_vec_near(s.triangles[0].v1, {-1, 2, 3});
+    expect_vec_near(s.triangles[0].v2, {1, 2, 5});
     // The face normal of the transformed triangle: (v1 - v0) x (v2 - v0), unit.
-    expect_near(s.triangles[0].normal, glm::normalize(glm::cross(dvec3(-2, -2, 0), dvec3(0, -2, 2))));
+    expect_vec_near(s.triangles[0].normal, glm::normalize(glm::cross(dvec3(-2, -2, 0), dvec3(0, -2, 2))));
     EXPECT_EQ(s.mesh_files, 1);
     EXPECT_EQ(s.degenerate_mesh_triangles, 1u);
 }
@@ -68,10 +65,10 @@ TEST(MeshSurface, RadiansAndPerAxisScaleAndNoTransform) {
         "  - {type: mesh, file: meshes/tri.off, material: grey}\n")).scene;
     ASSERT_EQ(s.triangles.size(), 2u);
     // (0,1,0) -> (0,2,0) -> half a turn about x -> (0,-2,0); (0,0,1) -> (0,0,3) -> (0,0,-3).
-    expect_near(s.triangles[0].v0, {1, 0, 0});
-    expect_near(s.triangles[0].v1, {0, -2, 0});
-    expect_near(s.triangles[0].v2, {0, 0, -3});
-    expect_near(s.triangles[1].v1, {0, 1, 0});
+    expect_vec_near(s.triangles[0].v0, {1, 0, 0});
+    expect_vec_near(s.triangles[0].v1, {0, -2, 0});
+    expect_vec_near(s.triangles[0].v2, {0, 0, -3});
+    expect_vec_near(s.triangles[1].v1, {0, 1, 0});
 }
 
 TEST(MeshSurface, MistakesAreOneLineNamingTheirFile) {
@@ -110,10 +107,10 @@ TEST(MeshSurface, SmoothNormalsAreAreaWeightedByHand) {
     ASSERT_EQ(s.vertex_normals.size(), 3u);
     // A and B belong to both faces: (0,0,1) * 1 + (0,1,1)/sqrt2 * sqrt2 = (0,1,2), over sqrt 5.
     const dvec3 ab = dvec3(0, 1, 2) / std::sqrt(5.0);
-    expect_near(s.vertex_normals[0][0], ab);
-    expect_near(s.vertex_normals[0][1], ab);
-    expect_near(s.vertex_normals[0][2], {0, 0, 1});                      // C: ABC's alone
-    expect_near(s.vertex_normals[1][2], dvec3(0, 1, 1) / std::sqrt(2.0));  // D: BAD's alone
+    expect_vec_near(s.vertex_normals[0][0], ab);
+    expect_vec_near(s.vertex_normals[0][1], ab);
+    expect_vec_near(s.vertex_normals[0][2], {0, 0, 1});                      // C: ABC's alone
+    expect_vec_near(s.vertex_normals[1][2], dvec3(0, 1, 1) / std::sqrt(2.0));  // D: BAD's alone
     EXPECT_EQ(s.vertex_normals[2][0], dvec3(0));  // the plain triangle is flat
 
     // Shading at ABC's centroid mixes its corners by 1/3 each; the face
@@ -123,13 +120,13 @@ TEST(MeshSurface, SmoothNormalsAreAreaWeightedByHand) {
     const Hit<double> hit = closest_hit(g, down);
     ASSERT_TRUE(hit.found());
     const SurfacePoint<double> p = g.surface(down, hit);
-    expect_near(p.normal, {0, 0, 1});
-    expect_near(p.shading, glm::normalize(2.0 * ab + dvec3(0, 0, 1)));
+    expect_vec_near(p.normal, {0, 0, 1});
+    expect_vec_near(p.shading, glm::normalize(2.0 * ab + dvec3(0, 0, 1)));
     // The flat triangle shades with its face normal, facing the ray.
     const Ray<double> up{{5.25, 5.25, 0}, {0, 0, 1}};
     const SurfacePoint<double> q = g.surface(up, closest_hit(g, up));
-    expect_near(q.shading, {0, 0, -1});
-    expect_near(q.normal, {0, 0, -1});
+    expect_vec_near(q.shading, {0, 0, -1});
+    expect_vec_near(q.normal, {0, 0, -1});
 }
 
 TEST(MeshSurface, FileNormalsMoveByTheInverseTranspose) {
@@ -139,7 +136,7 @@ TEST(MeshSurface, FileNormalsMoveByTheInverseTranspose) {
         "  - {type: mesh, file: meshes/tri_vn.obj, material: grey, smooth: true, transform: {scale: [2, 1, 1]}}\n")).scene;
     ASSERT_EQ(s.vertex_normals.size(), 1u);
     // Stretching x by 2 tilts the normal (1,0,1) toward z: diag(1/2, 1, 1) (1,0,1) = (0.5, 0, 1).
-    for (const dvec3& n : s.vertex_normals[0]) expect_near(n, glm::normalize(dvec3(0.5, 0, 1)));
+    for (const dvec3& n : s.vertex_normals[0]) expect_vec_near(n, glm::normalize(dvec3(0.5, 0, 1)));
 }
 
 // A mesh file with vertex colours: they multiply the material's ambient

@@ -15,7 +15,7 @@ namespace {
 using test::write_temp_file;
 
 // The scene the test movies name, in the folder movies/.
-const std::string kScene =
+const std::string kMovieScene =
     "cameras:\n"
     "  persp: {type: perspective, width: 10, height: 10, view_point: [0, 0, 5], look_at: [0, 0, -1],\n"
     "          up: [0, 1, 0], projection_distance: 1}\n"
@@ -28,7 +28,7 @@ const std::string kScene =
     "render: {samples_per_pixel: 2, max_depth: 3}\n";
 
 std::string movie_path(const std::string& yaml) {
-    write_temp_file("movies/scene.yaml", kScene);
+    write_temp_file("movies/scene.yaml", kMovieScene);
     return write_temp_file("movies/movie.yaml", yaml);
 }
 

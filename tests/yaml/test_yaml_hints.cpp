@@ -19,7 +19,7 @@ using test::scene_error;
 // quotes, apostrophes and brackets, and a flow map spans lines 5-6: none of
 // them is a mistake. Line 4 is "materials:", line 7 the material "red",
 // line 12 the first sphere and line 22 the empty one after the last newline.
-const std::string kScene =
+const std::string kHintScene =
     "# A scene in the report's format (animations/scene.yaml, shortened).\n"
     "# Colours are 0..255; a material's \"one colour\" serves all its terms.\n"
     "\n"
@@ -42,9 +42,9 @@ const std::string kScene =
     "  perspective: {type: perspective, width: 80, height: 80, view_point: [2, -10, 10],\n"
     "                look_at: [0, 2, -1], up: [0, 0, 1], projection_distance: 10}\n";
 
-// kScene with the first `from` replaced by `to`.
+// kHintScene with the first `from` replaced by `to`.
 std::string edited(const std::string& from, const std::string& to) {
-    std::string s = kScene;
+    std::string s = kHintScene;
     const std::size_t at = s.find(from);
     EXPECT_NE(at, std::string::npos) << from;
     return at == std::string::npos ? s : s.replace(at, from.size(), to);
@@ -53,10 +53,10 @@ std::string edited(const std::string& from, const std::string& to) {
 const std::string kSameColumn = "keys of one map, and items of one list, start in the same column";
 
 TEST(YamlHints, NoneForACorrectFile) {
-    EXPECT_EQ(yaml_hint(kScene, 0, 0, "end of map not found"), "");
+    EXPECT_EQ(yaml_hint(kHintScene, 0, 0, "end of map not found"), "");
     for (int line = 1; line <= 22; ++line)
         for (const char* message : {"end of map flow not found", "illegal flow end", "unknown token"})
-            EXPECT_EQ(yaml_hint(kScene, line, 1, message), "") << line << " " << message;
+            EXPECT_EQ(yaml_hint(kHintScene, line, 1, message), "") << line << " " << message;
     // Tabs inside a flow spanning lines, escaped quotes and apostrophes are
     // fine too; yaml-cpp reads these files.
     const std::string tab_in_flow = edited("          glazed", "\t\tglazed");
@@ -88,7 +88,7 @@ TEST(YamlHints, Brackets) {
               "the '}' at line 12, column 65 closes nothing");
     EXPECT_EQ(yaml_hint(edited("material: red}", "material: red"), 14, 3, "illegal block entry"),
               "the '{' at line 12, column 5 is never closed");
-    EXPECT_EQ(yaml_hint(kScene + "effects: [ambient, diffuse\n", 23, 1, "end of sequence flow not found"),
+    EXPECT_EQ(yaml_hint(kHintScene + "effects: [ambient, diffuse\n", 23, 1, "end of sequence flow not found"),
               "the '[' at line 22, column 10 is never closed");
 }
 
@@ -125,7 +125,7 @@ TEST(YamlHints, Indentation) {
 }
 
 TEST(YamlHintsInLoader, SceneErrorsEndInTheHint) {
-    EXPECT_EQ(scene_error(kScene), "(no error)");
+    EXPECT_EQ(scene_error(kHintScene), "(no error)");
     EXPECT_EQ(scene_error(edited("  red:", "\tred:")),
               "FILE:7:2: error: invalid yaml: end of map not found "
               "(line 7 is indented with a tab; YAML indents with spaces only)");
