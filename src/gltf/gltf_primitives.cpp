@@ -35,19 +35,19 @@ public:
                       " in mode " + std::to_string(prim.mode));
         if (prim.material < 0 || size_t(prim.material) >= m_.materials.size()) return;
         const tinygltf::Material& mat = m_.materials[size_t(prim.material)];
-        for (const int set : {mat.pbrMetallicRoughness.baseColorTexture.index >= 0 ? base_color_set(mat) : -1,
-                              mat.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 ? mat.pbrMetallicRoughness.metallicRoughnessTexture.texCoord : -1,
-                              mat.normalTexture.index >= 0 ? mat.normalTexture.texCoord : -1,
-                              mat.occlusionTexture.index >= 0 ? mat.occlusionTexture.texCoord : -1,
-                              mat.emissiveTexture.index >= 0 ? mat.emissiveTexture.texCoord : -1})
+        const tinygltf::PbrMetallicRoughness& pbr = mat.pbrMetallicRoughness;
+        for (const int set : {set_read_by(pbr.baseColorTexture), set_read_by(pbr.metallicRoughnessTexture),
+                              set_read_by(mat.normalTexture), set_read_by(mat.occlusionTexture),
+                              set_read_by(mat.emissiveTexture)})
             if (set >= 0 && !prim.attributes.count("TEXCOORD_" + std::to_string(set)))
                 fail(what + ": its material reads TEXCOORD_" + std::to_string(set) + ", which it does not have");
     }
 
-    // The TEXCOORD set a material's base colour texture reads: its own,
-    // or its KHR_texture_transform's texCoord, which overrides it.
-    static int base_color_set(const tinygltf::Material& mat) {
-        const tinygltf::TextureInfo& info = mat.pbrMetallicRoughness.baseColorTexture;
+    // The TEXCOORD set a texture reads (-1: no texture): its textureInfo's
+    // own, or its KHR_texture_transform's texCoord, which overrides it.
+    template <typename TextureInfo>
+    static int set_read_by(const TextureInfo& info) {
+        if (info.index < 0) return -1;
         if (const tinygltf::Value* t = extension_value(info.extensions, "KHR_texture_transform", "texCoord"))
             if (t->IsInt()) return t->GetNumberAsInt();
         return info.texCoord;

@@ -173,6 +173,37 @@ TEST(GltfEmission, TexturesOnOtherCoordinatesThanTheBaseColoursAreCountedNotDraw
     EXPECT_GE(g.scene.materials[0].occlusion_texture, 0);
 }
 
+TEST(GltfEmission, ATransformsTexCoordNamesTheSetAMeshMustHave) {
+    // The first test's quad and emissive texture, its coordinates in
+    // TEXCOORD_1 only: the emissive and normal textures say texCoord 0, but
+    // their KHR_texture_transform's texCoord 1 overrides it, so the file
+    // is whole (it was refused for lacking TEXCOORD_0) and the emission
+    // drawn as before; the normal texture is counted, not drawn.
+    Quad q{-1, 1, -1, 1, 0, 0};
+    q.uvs = false;
+    q.uv1 = {0, 0, 1, 0, 1, 1, 0, 1};
+    const std::string to_set_1 = "\"texCoord\": 0, \"extensions\": {\"KHR_texture_transform\": {\"texCoord\": 1}}";
+    const std::string json = quads_file(
+        {q}, "\"extensionsUsed\": [\"KHR_texture_transform\"],\n" +
+                 surfaces({with("[0.2, 0.2, 0.2, 1]", ", \"emissiveFactor\": [0.4, 0.4, 0.4], \"emissiveTexture\": {\"index\": 0, " +
+                                                          to_set_1 + "}, \"normalTexture\": {\"index\": 0, " + to_set_1 + "}")},
+                          {{0, 0}}, {image_json(rgba_png(2, 1, kRedBlue))}, {kNearestClamp}));
+    const GltfFile f = load(json);
+    ASSERT_EQ(f.warnings.size(), 1u);
+    EXPECT_NE(f.warnings[0].find(": warning: 1 texture(s) not drawn"), std::string::npos) << f.warnings[0];
+    EXPECT_EQ(f.scene.materials[0].emissive_texture, 0);
+    for (const Precision p : kPrecisions) {
+        const Image im = top_view(lit(json), p);
+        expect_columns(im, 0, 4, {143, 41, 41}, std::string(precision_name(p)) + ", left");
+        expect_columns(im, 4, 8, {41, 41, 143}, std::string(precision_name(p)) + ", right");
+    }
+    // Without the override the material reads TEXCOORD_0, which it lacks.
+    std::string plain = json;
+    for (size_t at; (at = plain.find(", \"extensions\": {\"KHR_texture_transform\": {\"texCoord\": 1}}")) != std::string::npos;)
+        plain.erase(at, std::string(", \"extensions\": {\"KHR_texture_transform\": {\"texCoord\": 1}}").size());
+    expect_input_error([&] { load(plain); }, "t.gltf", "its material reads TEXCOORD_0, which it does not have");
+}
+
 TEST(GltfOcclusion, AStrengthOutsideZeroToOneIsRefused) {
     for (const std::string strength : {"1.5", "-0.25"}) {
         const std::string json = quads_file(
