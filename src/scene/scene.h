@@ -31,6 +31,7 @@ enum class SurfaceKind { sphere, plane, triangle, mesh, instance, instances, gro
 struct NamedSurface {
     std::string name;
     SurfaceKind kind = SurfaceKind::sphere;
+    bool colored_mesh = false;  // a `type: mesh` with vertex colours, kept as an instance (messages say "mesh")
     // sphere, plane: into spheres or planes; triangle, mesh: its first
     // triangle; instance, instances: its first instance; group: into groups.
     size_t index = 0;

@@ -164,7 +164,8 @@ Target read_target(const YamlReader& r, const YAML::Node& at, const std::string&
         names.push_back(s.name);
         if (s.name != name) continue;
         const char* kind[] = {"sphere", "plane", "triangle", "mesh", "instance", "instances", "group"};
-        Target t = pick_property(r, at, path, std::string(kind[int(s.kind)]) + " '" + name + "'", rest,
+        const std::string what = s.colored_mesh ? "mesh" : kind[int(s.kind)];
+        Target t = pick_property(r, at, path, what + " '" + name + "'", rest,
                                  surface_properties(s.kind));
         t.index = i;
         return t;

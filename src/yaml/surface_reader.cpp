@@ -159,6 +159,7 @@ private:
             // (its zero-area triangles counted for each surface, as below).
             scene_.degenerate_mesh_triangles += load(m).degenerate_dropped;
             named.kind = SurfaceKind::instance;
+            named.colored_mesh = true;
             named.index = scene_.instances.size();
             scene_.instances.push_back({colored_mesh(m), material, world});
             return;

@@ -237,6 +237,26 @@ TEST(Animate, MistakesNameThePathAndTheFrame) {
               "FILE:6:3: error: 'camera.view_point' is animated twice");
 }
 
+TEST(Animate, AColouredMeshIsCalledAMeshInMistakes) {
+    // A mesh file with vertex colours is kept as an instance of a scene
+    // mesh (the world's triangles carry no colours); a mistake still calls
+    // the surface what the file wrote.
+    write_temp_file("animate_errors/colored.obj", "v 0 0 0 1 0 0\nv 1 0 0 1 0 0\nv 0 1 0 1 0 0\nf 1 2 3\n");
+    write_temp_file("animate_errors/colored.yaml",
+                    replaced(kAnimatedScene, "lights:\n", "  - {type: mesh, name: m, file: colored.obj, material: red}\nlights:\n"));
+    const std::string path = write_temp_file("animate_errors/colored_movie.yaml",
+                                             "scene: colored.yaml\nfps: 5\nseconds: 1\nanimate:\n  surfaces.m.radius: 2\n");
+    try {
+        load_job({path});
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(replaced(e.formatted(), path, "FILE"),
+                  "FILE:5:3: error: unknown property 'radius' in 'surfaces.m.radius': mesh 'm' can animate "
+                  "transform.translate, transform.scale, transform.rotate.axis, transform.rotate.degrees, "
+                  "transform.rotate.radians");
+    }
+}
+
 TEST(Animate, TheShowcaseIsTheSameBytesForAnyShardLayout) {
     const fs::path movie = fs::path(FIRSTHIT_SOURCE_DIR) / "animations" / "showcase.yaml";
     const fs::path dir = test::temp_dir() / "showcase_shards";
