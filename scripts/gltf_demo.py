@@ -8,8 +8,9 @@ camera on a node, a directional, a point and a spot light
 (KHR_lights_punctual), a floor of textured tiles (a PNG repeated,
 KHR_texture_transform) and a trellis whose bars are a cutout (alphaMode
 MASK): the floor shows through its holes, and the sun throws the grid's
-shadow; a pane of blue glass (alphaMode BLEND) before the blob. One .gltf
-file, its buffer and images in data: URIs; glTF is y-up.
+shadow; a pane of blue glass (alphaMode BLEND) before the blob, which
+dims the light through it. One .gltf file, its buffer and images in data:
+URIs; glTF is y-up.
 
     python3 scripts/gltf_demo.py OUT.gltf
 """
@@ -247,8 +248,8 @@ def main(out):
     nodes.append({"name": "trellis", "mesh": len(meshes) - 1, "translation": [3.6, 1.9, 2.6]})
     scene_nodes.append(len(nodes) - 1)
 
-    # A pane of blue glass (alphaMode BLEND, alpha 0.4: see-through, and
-    # too clear to cast a shadow) standing on the floor before the blob.
+    # A pane of blue glass (alphaMode BLEND, alpha 0.4: see-through, its
+    # shadow 0.6 of the light) standing on the floor before the blob.
     pos, nrm, idx, uv = quad(2.0, 1.6)
     meshes.append(b.mesh((pos, nrm, idx), 9))
     nodes.append({"name": "glass", "mesh": len(meshes) - 1, "translation": [-4.6, 0.8, -0.9],

@@ -86,10 +86,13 @@ FH_HOT_INLINE LaneInts<T> closest_instance_hits(const InstanceSet<T>& set, const
 }
 
 // Per lane: some instance's surface lies in (0, t_max); t_max is 0 in the
-// lanes to skip.
-template <typename T>
+// lanes to skip. kSeeThrough (a scene with see-through surfaces): those
+// multiply each lane's *through by the light they let pass (light_through)
+// instead, and block only the lanes left with none.
+template <typename T, bool kSeeThrough = false>
 FH_HOT_INLINE LaneInts<T> occluded_by_instances(const InstanceSet<T>& set, const RayPacket<T>& ray,
-                                                Lanes<T> t_max, const LaneInts<T>& active) {
+                                                Lanes<T> t_max, const LaneInts<T>& active,
+                                                Lanes<T>* through = nullptr) {
     LaneInts<T> blocked = LaneInts<T>{};
     for_each_leaf(set.walk_nodes, ray, active, t_max, [&](const WalkNode<T>& n, const LaneInts<T>& entering) FH_HOT_LAMBDA {
         for (int k = n.first_listed(); k < n.first_listed() + n.count(); ++k) {
@@ -98,9 +101,12 @@ FH_HOT_INLINE LaneInts<T> occluded_by_instances(const InstanceSet<T>& set, const
             const RayPacket<T> local = instance.enter(ray, scale);
             const LaneInts<T> asking = entering & (t_max > T(0));
             const FlatGeometry<T>& mesh = *set.meshes[size_t(instance.mesh)];
-            if (instance.cutout >= 0)  // blocked where the nearest point that is not a hole lies below t_max
-                blocked |= asking & (past_cutouts(mesh, set.cutouts[size_t(instance.cutout)], local, asking,
-                                                  t_max * scale,
+            const Cutout* cut = instance.cutout >= 0 ? &set.cutouts[size_t(instance.cutout)] : nullptr;
+            if (kSeeThrough && cut && cut->blend) {
+                *through = select(asking, *through * light_through(mesh, *cut, local, asking, t_max * scale), *through);
+                blocked |= asking & (*through <= T(0));
+            } else if (cut)  // blocked where the nearest point that is not a hole lies below t_max
+                blocked |= asking & (past_cutouts(mesh, *cut, local, asking, t_max * scale,
                                                   closest_hits_within(mesh, local, asking, t_max * scale))
                                          .prim != kNoHit);
             else
@@ -150,6 +156,23 @@ __attribute__((noinline)) LaneInts<T> occluded_out_of_line(const FlatGeometry<T>
                                                            const InstanceSet<T>* instances, const RayPacket<T>& ray,
                                                            const Lanes<T>& t_max, const LaneInts<T>& active) {
     return occluded(world, instances, ray, t_max, active);
+}
+
+// Both levels, in a scene with see-through surfaces (FlatScene::blended):
+// per lane the fraction of light that comes along each active ray from
+// t_max -- 0 where something opaque lies in (0, t_max), else the product of
+// (1 - alpha) over the see-through surfaces the ray crosses. A call, as the
+// two above.
+template <typename T>
+__attribute__((noinline)) Lanes<T> light_through_out_of_line(const FlatGeometry<T>& world,
+                                                             const InstanceSet<T>* instances, const RayPacket<T>& ray,
+                                                             const Lanes<T>& t_max, const LaneInts<T>& active) {
+    Lanes<T> through = splat(T(1));
+    LaneInts<T> blocked = occluded(world, ray, t_max, active);
+    if (instances && !all(blocked | ~active))
+        blocked |= occluded_by_instances<T, true>(*instances, ray, select(blocked | ~active, splat(T(0)), t_max),
+                                                  active & ~blocked, &through);
+    return select(blocked, splat(T(0)), through);
 }
 
 // The nearest hit of one ray on both levels (tests, the viewer).

@@ -245,6 +245,18 @@ private:
         else return occluded(geometry_, {origin, to_light}, distance, lit);
     }
 
+    // Whether shadow rays go through see-through surfaces (a scene with
+    // instances, some of them BLEND): known at compile time to be false
+    // for every other shader.
+    FH_HOT_INLINE bool see_through() const {
+        if constexpr (kInstances) return scene_.blended;
+        else return false;
+    }
+    FH_HOT_INLINE const InstanceSet<T>* instances() const {
+        if constexpr (kInstances) return instances_;
+        else return nullptr;
+    }
+
     // The same where instances exist: lanes are told apart by instance and
     // primitive; an instance's primitive is projected in its mesh's space and
     // carried back to the world (normals by the inverse transpose).
@@ -383,9 +395,18 @@ private:
         // (intensity >= 0, so one product tests both.)
         LaneInts<T> lit = hit & (light.intensity * n_dot_l > T(0));
         if (none(lit)) return;
+        Lanes<T> intensity = light.intensity;
         if constexpr (kShadowRays) {
             counts.shadow += std::uint64_t(count(lit));
-            lit &= ~blocked(s.origin, light.to_light, light.distance, lit);
+            if (see_through()) {
+                // What see-through surfaces on the way let through dims the light.
+                const Lanes<T> through = light_through_out_of_line(geometry_, instances(), {s.origin, light.to_light},
+                                                                   light.distance, lit);
+                lit &= through > T(0);
+                intensity = intensity * through;
+            } else {
+                lit &= ~blocked(s.origin, light.to_light, light.distance, lit);
+            }
             if (none(lit)) return;
         }
         // Per material the lit points show: its colour terms with this light,
@@ -405,7 +426,7 @@ private:
         if constexpr (kInstances)
             if (scene_.textured) kd = {kd.x * s.albedo.x, kd.y * s.albedo.y, kd.z * s.albedo.z};
         // A select, not a product with 0: an unlit lane may hold NaN.
-        const Lanes<T> diffuse = select(lit, light.intensity * n_dot_l, zero);
+        const Lanes<T> diffuse = select(lit, intensity * n_dot_l, zero);
         Lanes<T> specular = zero;
         if constexpr (kSpecularTerm) {
             // intensity (n.h)^exponent, h the half vector of the light and the viewer.
@@ -419,7 +440,7 @@ private:
             if (scene_.fractional_exponents)  // rare: std::pow where needed
                 for (int i = 0; i < kLanes<T>; ++i)
                     if (lit[i] && !whole_exponent[i]) power[i] = std::pow(n_dot_h[i], exponent[i]);
-            specular = select(lit, light.intensity * power, zero);
+            specular = select(lit, intensity * power, zero);
         }
         local.x += diffuse * kd.x + specular * ks.x;
         local.y += diffuse * kd.y + specular * ks.y;
