@@ -132,6 +132,9 @@ FH_HOT_INLINE HitLanes<T> closest_hits(const FlatGeometry<T>& world, const Insta
 }
 
 // Both levels: whether anything lies in (0, t_max) along each active ray.
+// A yes or no: a see-through (BLEND) surface counts here as a cutout at
+// alpha 0.5. The shader asks light_through_out_of_line instead where a
+// scene has one, to dim the light by what it lets through.
 template <typename T>
 FH_HOT_INLINE LaneInts<T> occluded(const FlatGeometry<T>& world, const InstanceSet<T>* instances,
                                    const RayPacket<T>& ray, const Lanes<T>& t_max, const LaneInts<T>& active) {

@@ -39,8 +39,8 @@ struct Material {
     T alpha_cutoff = T(0.5);
     // glTF's alphaMode BLEND: the surface is see-through, its alpha (as
     // above) the share of its own colour in what a camera or reflection
-    // ray brings back, the rest from behind it; shadow rays treat it as a
-    // cutout at alpha 0.5.
+    // ray brings back, the rest from behind it; a shadow ray through it
+    // carries (1 - alpha) of its light on (render/cutouts.h light_through).
     bool blend = false;
 };
 
