@@ -23,24 +23,24 @@ namespace fs = std::filesystem;
 using test::write_temp_file;
 
 // Keys 0 at frame 0 and 8 at frame 4; frame 1 is t = 1/4 of the way.
-double at(Interpolation i, int frame) {
+double value_at(Interpolation i, int frame) {
     const Keyframes k{{{0, dvec3(0)}, {4, dvec3(8)}}, i};
     return evaluate(Path(k), frame, 10, dvec3(0)).x;
 }
 
 TEST(Animate, EachInterpolationByHand) {
-    EXPECT_EQ(at(Interpolation::step, 1), 0);
-    EXPECT_EQ(at(Interpolation::step, 3), 0);
-    EXPECT_EQ(at(Interpolation::linear, 1), 2);
-    EXPECT_EQ(at(Interpolation::ease_in, 1), 0.5);        // 8 (1/4)^2
-    EXPECT_EQ(at(Interpolation::ease_out, 1), 3.5);       // 8 (1 - (3/4)^2)
-    EXPECT_EQ(at(Interpolation::ease_in_out, 1), 1.25);   // 8 (3/16 - 2/64)
-    EXPECT_EQ(at(Interpolation::ease_in_out, 2), 4);      // the middle
+    EXPECT_EQ(value_at(Interpolation::step, 1), 0);
+    EXPECT_EQ(value_at(Interpolation::step, 3), 0);
+    EXPECT_EQ(value_at(Interpolation::linear, 1), 2);
+    EXPECT_EQ(value_at(Interpolation::ease_in, 1), 0.5);        // 8 (1/4)^2
+    EXPECT_EQ(value_at(Interpolation::ease_out, 1), 3.5);       // 8 (1 - (3/4)^2)
+    EXPECT_EQ(value_at(Interpolation::ease_in_out, 1), 1.25);   // 8 (3/16 - 2/64)
+    EXPECT_EQ(value_at(Interpolation::ease_in_out, 2), 4);      // the middle
     for (const Interpolation i : {Interpolation::step, Interpolation::linear, Interpolation::catmull_rom,
                                   Interpolation::ease_in, Interpolation::ease_out, Interpolation::ease_in_out}) {
-        EXPECT_EQ(at(i, 0), 0);  // at the keys exactly
-        EXPECT_EQ(at(i, 4), 8);
-        EXPECT_EQ(at(i, 9), 8);  // the last key holds after it
+        EXPECT_EQ(value_at(i, 0), 0);  // at the keys exactly
+        EXPECT_EQ(value_at(i, 4), 8);
+        EXPECT_EQ(value_at(i, 9), 8);  // the last key holds after it
     }
     // On vectors, component by component.
     const Keyframes v{{{2, dvec3(0, 4, -8)}, {6, dvec3(4, 0, 8)}}, Interpolation::ease_out};
@@ -49,7 +49,7 @@ TEST(Animate, EachInterpolationByHand) {
 }
 
 // A scene with named things, 24 x 24, and a movie over it.
-const std::string kAnimatedScene =
+const std::string kAnimateScene =
     "materials:\n"
     "  red: {color: [255, 19, 1], ambient: 0.1, diffuse: 0.5, specular: 1.5, phong_exponent: 10}\n"
     "  teal: {color: [20, 255, 255], ambient: 0.1, diffuse: 0.3, specular: 10, phong_exponent: 100,"
@@ -88,7 +88,7 @@ std::string frame_bytes(const fs::path& dir, const std::string& movie, int frame
     return ss.str();
 }
 
-struct Case {
+struct PropertyCase {
     std::string path, value;      // animate: PATH: VALUE
     std::string from, to;         // the same value written into the scene by hand
     std::string movie_lights = "[ambient, spot]";
@@ -96,7 +96,7 @@ struct Case {
 };
 
 TEST(Animate, EveryPropertyChangesTheFrameAsTheSceneFileWould) {
-    const std::vector<Case> cases = {
+    const std::vector<PropertyCase> cases = {
         {"surfaces.ball.center", "[-1, 0, 1]", "center: [-1, 0, 0]", "center: [-1, 0, 1]"},
         {"surfaces.ball.radius", "0.5", "radius: 1, material: red", "radius: 0.5, material: red"},
         {"surfaces.floor.distance", "-1.5", "distance: -1", "distance: -1.5"},
@@ -117,14 +117,14 @@ TEST(Animate, EveryPropertyChangesTheFrameAsTheSceneFileWould) {
         {"camera.projection_distance", "5", "projection_distance: 10", "projection_distance: 5"},
         {"camera.view_point", "[3, -10, 10]", "view_point: [2, -10, 10]", "view_point: [3, -10, 10]"},
     };
-    const fs::path dir = fs::path(write_temp_file("animate_all/scene.yaml", kAnimatedScene)).parent_path();
+    const fs::path dir = fs::path(write_temp_file("animate_all/scene.yaml", kAnimateScene)).parent_path();
     write_temp_file("animate_all/base.yaml", "scene: scene.yaml\nlights: [ambient, spot]\nseconds: 0.1\n");
     const std::string base = frame_bytes(dir, "base.yaml");
-    for (const Case& c : cases) {
+    for (const PropertyCase& c : cases) {
         const std::string name = c.path;
         write_temp_file("animate_all/" + name + ".movie.yaml", "scene: scene.yaml\nlights: " + c.movie_lights +
                         "\nseconds: 0.1\nanimate:\n  " + c.path + ": " + c.value + "\n");
-        write_temp_file("animate_all/" + name + ".scene.yaml", c.from.empty() ? kAnimatedScene : replaced(kAnimatedScene, c.from, c.to));
+        write_temp_file("animate_all/" + name + ".scene.yaml", c.from.empty() ? kAnimateScene : replaced(kAnimateScene, c.from, c.to));
         write_temp_file("animate_all/" + name + ".expected.yaml", "scene: " + name + ".scene.yaml\nlights: " +
                         c.expected_lights + "\nseconds: 0.1\n");
         const std::string animated = frame_bytes(dir, name + ".movie.yaml");
@@ -134,7 +134,7 @@ TEST(Animate, EveryPropertyChangesTheFrameAsTheSceneFileWould) {
 }
 
 TEST(Animate, TimeAndFrameKeysAgreeAtTheKeys) {
-    write_temp_file("animate_time/scene.yaml", kAnimatedScene);
+    write_temp_file("animate_time/scene.yaml", kAnimateScene);
     const Movie m = load_movie(write_temp_file("animate_time/m.yaml",
         "scene: scene.yaml\nfps: 24\nseconds: 2\nanimate:\n"
         "  surfaces.ball.radius: {keyframes: [{time: 0, value: 1}, {time: 0.5, value: 2}, {frame: 36, value: 0.5},"
@@ -157,7 +157,7 @@ TEST(Animate, TimeAndFrameKeysAgreeAtTheKeys) {
 }
 
 TEST(Animate, FollowingAndAimingAtMovingThings) {
-    write_temp_file("animate_follow/scene.yaml", kAnimatedScene);
+    write_temp_file("animate_follow/scene.yaml", kAnimateScene);
     const Movie m = load_movie(write_temp_file("animate_follow/m.yaml",
         "scene: scene.yaml\nfps: 4\nseconds: 1\nanimate:\n"
         "  surfaces.ball.center: {keyframes: [{frame: 0, value: [0, 0, 0]}, {frame: 4, value: [4, 0, 0]}]}\n"
@@ -177,7 +177,7 @@ TEST(Animate, FollowingAndAimingAtMovingThings) {
 }
 
 TEST(Animate, TheEffectPlanFollowsTheLightsPerFrame) {
-    write_temp_file("animate_plan/scene.yaml", kAnimatedScene);
+    write_temp_file("animate_plan/scene.yaml", kAnimateScene);
     const std::string movie = write_temp_file("animate_plan/m.yaml",
         "scene: scene.yaml\nlights: [ambient]\nfps: 4\nseconds: 1\nanimate:\n"
         "  lights.spot.on: {keyframes: [{frame: 0, value: false}, {frame: 2, value: true}]}\n"
@@ -196,8 +196,8 @@ TEST(Animate, TheEffectPlanFollowsTheLightsPerFrame) {
     EXPECT_GT(shadow[3], 0u);
 }
 
-std::string movie_error(const std::string& name, const std::string& animate) {
-    write_temp_file("animate_errors/scene.yaml", kAnimatedScene);
+std::string animate_error(const std::string& name, const std::string& animate) {
+    write_temp_file("animate_errors/scene.yaml", kAnimateScene);
     const std::string path = write_temp_file("animate_errors/" + name,
                                              "scene: scene.yaml\nfps: 5\nseconds: 1\nanimate:\n" + animate);
     try {
@@ -209,31 +209,31 @@ std::string movie_error(const std::string& name, const std::string& animate) {
 }
 
 TEST(Animate, MistakesNameThePathAndTheFrame) {
-    EXPECT_EQ(movie_error("radius.yaml", "  surfaces.ball.radius: {keyframes: [{frame: 0, value: 1}, {frame: 4, value: -1}]}\n"),
+    EXPECT_EQ(animate_error("radius.yaml", "  surfaces.ball.radius: {keyframes: [{frame: 0, value: 1}, {frame: 4, value: -1}]}\n"),
               "FILE:5:3: error: surfaces.ball.radius is 0 at frame 2; it must be > 0");
-    EXPECT_EQ(movie_error("intensity.yaml",
+    EXPECT_EQ(animate_error("intensity.yaml",
                           "  lights.spot.intensity: {keyframes: [{frame: 0, value: 0}, {frame: 2, value: 0}, {frame: 4, value: 10}],"
                           " interpolation: catmull_rom}\n"),
               // The curve dips before it climbs: h11(1/2) * 2 frames * tangent 10/4 = -0.625.
               "FILE:5:3: error: lights.spot.intensity is -0.625 at frame 1; it must be >= 0");
-    EXPECT_EQ(movie_error("direction.yaml", "  lights.sun.direction: {keyframes: [{frame: 0, value: [1, 0, 0]}, {frame: 2, value: [-1, 0, 0]}]}\n"),
+    EXPECT_EQ(animate_error("direction.yaml", "  lights.sun.direction: {keyframes: [{frame: 0, value: [1, 0, 0]}, {frame: 2, value: [-1, 0, 0]}]}\n"),
               "FILE:5:3: error: lights.sun.direction is [0, 0, 0] at frame 1; a direction must not be zero");
     // Past what a transform may scale by, first at frame 1: 1 + (1e13 - 1) / 4 = 2.5e12.
-    EXPECT_EQ(movie_error("scale.yaml", "  surfaces.tri.transform.scale: {keyframes: [{frame: 0, value: 1}, {frame: 4, value: [1, 1e13, 1]}]}\n"),
+    EXPECT_EQ(animate_error("scale.yaml", "  surfaces.tri.transform.scale: {keyframes: [{frame: 0, value: 1}, {frame: 4, value: [1, 1e13, 1]}]}\n"),
               "FILE:5:3: error: surfaces.tri.transform.scale is [1, 2.5e+12, 1] at frame 1; a scale must be 1e-12 to 1e12 in size");
-    EXPECT_EQ(movie_error("unknown.yaml", "  lights.spot.radius: 2\n"),
+    EXPECT_EQ(animate_error("unknown.yaml", "  lights.spot.radius: 2\n"),
               "FILE:5:3: error: unknown property 'radius' in 'lights.spot.radius': spot light 'spot' can animate on, "
               "intensity, color, direction, position, max_angle");
-    EXPECT_EQ(movie_error("name.yaml", "  surfaces.bal.center: [0, 0, 0]\n"),
+    EXPECT_EQ(animate_error("name.yaml", "  surfaces.bal.center: [0, 0, 0]\n"),
               "FILE:5:3: error: no surface named 'bal' (a surface gets one with 'name:' in the scene) (did you mean 'ball'?)");
-    EXPECT_EQ(movie_error("kind.yaml", "  surface.ball.center: [0, 0, 0]\n"),
+    EXPECT_EQ(animate_error("kind.yaml", "  surface.ball.center: [0, 0, 0]\n"),
               "FILE:5:3: error: unknown property path 'surface.ball.center': a path is camera.PROPERTY, lights.NAME.PROPERTY, "
               "surfaces.NAME.PROPERTY, materials.NAME.PROPERTY or nodes.NAME.PROPERTY (did you mean 'surfaces'?)");
-    EXPECT_EQ(movie_error("order.yaml", "  surfaces.ball.radius: {keyframes: [{frame: 3, value: 1}, {frame: 1, value: 2}]}\n"),
+    EXPECT_EQ(animate_error("order.yaml", "  surfaces.ball.radius: {keyframes: [{frame: 3, value: 1}, {frame: 1, value: 2}]}\n"),
               "FILE:5:68: error: keyframes must be in increasing order: this one is at frame 1, the one before at frame 3");
-    EXPECT_EQ(movie_error("flag.yaml", "  lights.sun.on: {keyframes: [{frame: 0, value: true}], interpolation: linear}\n"),
+    EXPECT_EQ(animate_error("flag.yaml", "  lights.sun.on: {keyframes: [{frame: 0, value: true}], interpolation: linear}\n"),
               "FILE:5:72: error: 'lights.sun.on' only steps: use interpolation: step");
-    EXPECT_EQ(movie_error("twice.yaml", "  view_point: [0, 0, 1]\n  camera.view_point: [0, 0, 2]\n"),
+    EXPECT_EQ(animate_error("twice.yaml", "  view_point: [0, 0, 1]\n  camera.view_point: [0, 0, 2]\n"),
               "FILE:6:3: error: 'camera.view_point' is animated twice");
 }
 
@@ -243,7 +243,7 @@ TEST(Animate, AColouredMeshIsCalledAMeshInMistakes) {
     // the surface what the file wrote.
     write_temp_file("animate_errors/colored.obj", "v 0 0 0 1 0 0\nv 1 0 0 1 0 0\nv 0 1 0 1 0 0\nf 1 2 3\n");
     write_temp_file("animate_errors/colored.yaml",
-                    replaced(kAnimatedScene, "lights:\n", "  - {type: mesh, name: m, file: colored.obj, material: red}\nlights:\n"));
+                    replaced(kAnimateScene, "lights:\n", "  - {type: mesh, name: m, file: colored.obj, material: red}\nlights:\n"));
     const std::string path = write_temp_file("animate_errors/colored_movie.yaml",
                                              "scene: colored.yaml\nfps: 5\nseconds: 1\nanimate:\n  surfaces.m.radius: 2\n");
     try {

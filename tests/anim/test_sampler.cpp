@@ -21,30 +21,30 @@ Sampler vec3(Interpolation3 i, std::vector<double> times, std::vector<double> va
     return s;
 }
 
-void expect_near(const std::vector<double>& got, const std::vector<double>& want, double tol = 1e-12) {
+void expect_values_near(const std::vector<double>& got, const std::vector<double>& want, double tol = 1e-12) {
     ASSERT_EQ(got.size(), want.size());
     for (size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], want[i], tol) << "component " << i;
 }
 
 TEST(AnimationSampler, StepHoldsEachKeyUntilTheNext) {
     const Sampler s = vec3(Interpolation3::step, {1, 2, 4}, {0, 0, 0, 10, 20, 30, 5, 5, 5});
-    expect_near(sample(s, 0), {0, 0, 0});      // before the first key: its value
-    expect_near(sample(s, 1), {0, 0, 0});      // at a key
-    expect_near(sample(s, 1.999), {0, 0, 0});  // just before the next
-    expect_near(sample(s, 2), {10, 20, 30});
-    expect_near(sample(s, 3.9), {10, 20, 30});
-    expect_near(sample(s, 4), {5, 5, 5});
-    expect_near(sample(s, 100), {5, 5, 5});    // after the last: its value
+    expect_values_near(sample(s, 0), {0, 0, 0});      // before the first key: its value
+    expect_values_near(sample(s, 1), {0, 0, 0});      // at a key
+    expect_values_near(sample(s, 1.999), {0, 0, 0});  // just before the next
+    expect_values_near(sample(s, 2), {10, 20, 30});
+    expect_values_near(sample(s, 3.9), {10, 20, 30});
+    expect_values_near(sample(s, 4), {5, 5, 5});
+    expect_values_near(sample(s, 100), {5, 5, 5});    // after the last: its value
     EXPECT_EQ(sampler_problem(s), "");
 }
 
 TEST(AnimationSampler, LinearMixesTheTwoKeysAround) {
     const Sampler s = vec3(Interpolation3::linear, {0, 2, 3}, {0, 0, 0, 4, -2, 8, 4, 6, 8});
-    expect_near(sample(s, 0.5), {1, -0.5, 2});  // s = 0.25 of the way to key 1
-    expect_near(sample(s, 2), {4, -2, 8});
-    expect_near(sample(s, 2.75), {4, 4, 8});    // 0.75 of the way from (4,-2,8) to (4,6,8)
-    expect_near(sample(s, -1), {0, 0, 0});
-    expect_near(sample(s, 9), {4, 6, 8});
+    expect_values_near(sample(s, 0.5), {1, -0.5, 2});  // s = 0.25 of the way to key 1
+    expect_values_near(sample(s, 2), {4, -2, 8});
+    expect_values_near(sample(s, 2.75), {4, 4, 8});    // 0.75 of the way from (4,-2,8) to (4,6,8)
+    expect_values_near(sample(s, -1), {0, 0, 0});
+    expect_values_near(sample(s, 9), {4, 6, 8});
 }
 
 Sampler rotation(Interpolation3 i, std::vector<double> times, std::vector<double> quats) {
@@ -69,15 +69,15 @@ TEST(AnimationSampler, LinearRotationIsSlerpAlongTheShorterArc) {
     std::vector<double> keys = about_z(0);
     for (const double c : about_z(90)) keys.push_back(c);
     const Sampler quarter = rotation(Interpolation3::linear, {0, 1}, keys);
-    expect_near(sample(quarter, 0.5), about_z(45));
-    expect_near(sample(quarter, 0.25), about_z(22.5));
+    expect_values_near(sample(quarter, 0.5), about_z(45));
+    expect_values_near(sample(quarter, 0.25), about_z(22.5));
     // 170 to -170 degrees: the shorter arc passes through 180 (20 degrees),
     // not through 0 (340). -170 degrees written with w < 0 -- the same
     // rotation as +190 -- is the sign flip slerp must undo.
     std::vector<double> across = about_z(170);
     for (const double c : about_z(190)) across.push_back(c);  // = -(rotation by -170)
     const Sampler flip = rotation(Interpolation3::linear, {0, 1}, across);
-    expect_near(sample(flip, 0.5), about_z(180), 1e-12);
+    expect_values_near(sample(flip, 0.5), about_z(180), 1e-12);
     std::vector<double> negated = about_z(170);
     for (const double c : about_z(-170)) negated.push_back(c);  // the same two rotations, dot < 0
     const Sampler flipped = rotation(Interpolation3::linear, {0, 1}, negated);
@@ -88,7 +88,7 @@ TEST(AnimationSampler, LinearRotationIsSlerpAlongTheShorterArc) {
     // A quarter of the way: 175 degrees (or its negative quaternion).
     const std::vector<double> q = sample(flipped, 0.25), want = about_z(175);
     const double sign = q[3] * want[3] + q[2] * want[2] < 0 ? -1 : 1;
-    expect_near({sign * q[0], sign * q[1], sign * q[2], sign * q[3]}, want, 1e-12);
+    expect_values_near({sign * q[0], sign * q[1], sign * q[2], sign * q[3]}, want, 1e-12);
 }
 
 TEST(AnimationSampler, CubicSplineIsHermiteWithTangentsTimesTheInterval) {
@@ -104,17 +104,17 @@ TEST(AnimationSampler, CubicSplineIsHermiteWithTangentsTimesTheInterval) {
     };
     // At t = 2, s = 0.5: x = 0.5 * 0 + 0.125 * 2 * 4 + 0.5 * 10 + (-0.125) * 2 * (-2) = 1 + 5 + 0.5 = 6.5.
     EXPECT_NEAR(p(0.5, 0, 4, 10, -2, 2), 6.5, 1e-12);
-    expect_near(sample(s, 2), {6.5, p(0.5, 0, 0, 1, 0, 2), p(0.5, 0, 0, 2, 0, 2)});
-    expect_near(sample(s, 1.5), {p(0.25, 0, 4, 10, -2, 2), p(0.25, 0, 0, 1, 0, 2), p(0.25, 0, 0, 2, 0, 2)});
+    expect_values_near(sample(s, 2), {6.5, p(0.5, 0, 0, 1, 0, 2), p(0.5, 0, 0, 2, 0, 2)});
+    expect_values_near(sample(s, 1.5), {p(0.25, 0, 4, 10, -2, 2), p(0.25, 0, 0, 1, 0, 2), p(0.25, 0, 0, 2, 0, 2)});
     // At the keys their values; before and after, held -- never a tangent.
-    expect_near(sample(s, 1), {0, 0, 0});
-    expect_near(sample(s, 3), {10, 1, 2});
-    expect_near(sample(s, 0), {0, 0, 0});
-    expect_near(sample(s, 5), {10, 1, 2});
+    expect_values_near(sample(s, 1), {0, 0, 0});
+    expect_values_near(sample(s, 3), {10, 1, 2});
+    expect_values_near(sample(s, 0), {0, 0, 0});
+    expect_values_near(sample(s, 5), {10, 1, 2});
     // The same curve on keys 4 seconds apart: tangents count twice as much.
     Sampler slow = s;
     slow.times = {1, 5};
-    expect_near(sample(slow, 3), {p(0.5, 0, 4, 10, -2, 4), p(0.5, 0, 0, 1, 0, 4), p(0.5, 0, 0, 2, 0, 4)});
+    expect_values_near(sample(slow, 3), {p(0.5, 0, 4, 10, -2, 4), p(0.5, 0, 0, 1, 0, 4), p(0.5, 0, 0, 2, 0, 4)});
 }
 
 TEST(AnimationSampler, CubicSplineRotationsComeOutUnit) {

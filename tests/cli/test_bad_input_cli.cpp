@@ -44,7 +44,7 @@ std::string replace_all(std::string s, const std::string& from, const std::strin
 // Writes the case's files next to the good scene and movie, runs it, and
 // checks the contract. The output (-o DIR/out.png or --out DIR/out) must not
 // appear.
-void check(const Case& c) {
+void check_case(const Case& c) {
     SCOPED_TRACE(c.name);
     const fs::path dir = fresh_dir("bad_" + c.name);
     std::ofstream(dir / "scene.yaml") << kGoodScene;
@@ -132,7 +132,7 @@ TEST(BadInputCli, SceneFileMistakes) {
         {"depth_over_limit", {{"bad.yaml", kGoodScene + "render: {max_depth: 65}\n"}}, render("bad.yaml"),
          "DIR/bad.yaml:11:21: error: 'max_depth' must be between 0 and 64, got 65"},
     };
-    for (const Case& c : cases) check(c);
+    for (const Case& c : cases) check_case(c);
 }
 
 TEST(BadInputCli, WholeFileMistakes) {
@@ -162,7 +162,7 @@ TEST(BadInputCli, WholeFileMistakes) {
         {"frames_of_a_scene", {}, frames("scene.yaml"),
          "firsthit: error: DIR/scene.yaml is not a movie file (a movie file has a 'scene:' key)"},
     };
-    for (const Case& c : cases) check(c);
+    for (const Case& c : cases) check_case(c);
 }
 
 TEST(BadInputCli, MovieFileMistakes) {
@@ -197,7 +197,7 @@ TEST(BadInputCli, MovieFileMistakes) {
          {{"bad.yaml", "scene: scene.yaml\nanimate:\n  view_point: [0, 0, 0]\n  look_at: {toward: [0, 0, 0]}\n"}},
          frames("bad.yaml"), "DIR/bad.yaml:4:3: error: camera.look_at is [0, 0, 0] at frame 0; a direction must not be zero"},
     };
-    for (const Case& c : cases) check(c);
+    for (const Case& c : cases) check_case(c);
 }
 
 TEST(BadInputCli, OutputThatCannotBeWritten) {
@@ -213,7 +213,7 @@ TEST(BadInputCli, OutputThatCannotBeWritten) {
         {"frames_out_under_a_file", {}, "frames DIR/movie.yaml --quiet --out DIR/file.txt/frames",
          "DIR/file.txt/frames: error: cannot create output folder: not a directory"},
     };
-    for (const Case& c : cases) check(c);
+    for (const Case& c : cases) check_case(c);
 }
 
 TEST(BadInputCli, FrameSelectionsOutOfBoundsOrMalformed) {
@@ -251,7 +251,7 @@ TEST(BadInputCli, FrameSelectionsOutOfBoundsOrMalformed) {
         {"range_missing_value", {}, "frames DIR/movie.yaml --out DIR/out --range",
          "firsthit: error: option '--range' needs a value (R)"},
     };
-    for (const Case& c : cases) check(c);
+    for (const Case& c : cases) check_case(c);
 }
 
 TEST(BadInputCli, QualityAndThreadFlagsOutOfBounds) {
@@ -269,7 +269,7 @@ TEST(BadInputCli, QualityAndThreadFlagsOutOfBounds) {
         {"precision_unknown", {}, render("scene.yaml", "--precision half"),
          "firsthit: error: --precision must be 'float' or 'double', got 'half'"},
     };
-    for (const Case& c : cases) check(c);
+    for (const Case& c : cases) check_case(c);
 }
 
 }  // namespace

@@ -130,7 +130,6 @@ const Expected kMeshFiles[] = {
     {"STL/triangle_with_two_solids.stl", ""},
 };
 
-
 // Every file under `folder` whose name is one of `suffixes` (or, with an
 // empty list, every file but pictures and material libraries).
 std::set<std::string> files_under(const std::string& folder, const std::set<std::string>& suffixes) {
@@ -152,7 +151,7 @@ std::set<std::string> listed(const Expected* begin, const Expected* end) {
 
 // Renders `target` (a model, or a scene naming `file`) and checks the
 // outcome `expected` gives for `file`.
-void check(const std::string& target, const std::string& file, const std::string& expected, const fs::path& png) {
+void check_model(const std::string& target, const std::string& file, const std::string& expected, const fs::path& png) {
     SCOPED_TRACE(file);
     const auto r = run_firsthit("render " + target + " -o " + png.string() + " --resolution 96x72 --threads 1");
     const std::string full = (kModels / file).string();
@@ -207,7 +206,7 @@ TEST(DebianModelsCli, EveryGltfFileRendersOrIsOneLine) {
     int n = 0;
     for (const Expected& e : kGltf) {
         const fs::path png = dir / ("model" + std::to_string(n++) + ".png");
-        check((kModels / e.file).string(), e.file, e.outcome, png);
+        check_model((kModels / e.file).string(), e.file, e.outcome, png);
     }
 }
 
@@ -224,7 +223,7 @@ TEST(DebianModelsCli, EveryMeshFileRendersOrIsOneLine) {
                                 "lights: {a: {type: ambient, color: [255, 255, 255], intensity: 1}}\n"
                                 "cameras: {c: {type: perspective, width: 96, height: 72, view_point: [0, -12, 6], "
                                 "look_at: [0, 12, -6], up: [0, 0, 1], projection_distance: 10}}\n";
-        check(scene.string(), e.file, e.outcome, dir / ("mesh" + std::to_string(n++) + ".png"));
+        check_model(scene.string(), e.file, e.outcome, dir / ("mesh" + std::to_string(n++) + ".png"));
     }
 }
 

@@ -37,13 +37,13 @@ std::string format_of(const fs::path& video) {
 }
 
 // ffprobe's key=value lines for the video stream's `entries` (frames counted).
-std::string probe(const fs::path& video, const std::string& entries) {
+std::string probe_entries(const fs::path& video, const std::string& entries) {
     return run_shell("ffprobe -v error -select_streams v:0 -count_frames -show_entries " + entries +
                      " -of default=nw=1 " + video.string())
         .out;
 }
 
-std::string frame_rate(const fs::path& video) { return probe(video, "stream=r_frame_rate"); }
+std::string frame_rate(const fs::path& video) { return probe_entries(video, "stream=r_frame_rate"); }
 
 const std::string kSupported = "supported: .mp4 (H.264), .webm (VP9), .gif, .mov (H.264)\n";
 
@@ -68,7 +68,7 @@ TEST(EncodeCli, TheExtensionPicksTheFormat) {
         EXPECT_EQ(r.out, "encoded 12 frames at 12 fps into " + video.string() + " (" + c.label + ")\n");
         EXPECT_EQ(r.err, "") << c.file;
         EXPECT_EQ(format_of(video), c.probed) << c.file;
-        EXPECT_EQ(probe(video, "stream=width,height,nb_read_frames"), "width=64\nheight=64\nnb_read_frames=12\n")
+        EXPECT_EQ(probe_entries(video, "stream=width,height,nb_read_frames"), "width=64\nheight=64\nnb_read_frames=12\n")
             << c.file;
     }
     // MP4 and QuickTime share ffprobe's demuxer; their brands tell them apart.
@@ -81,7 +81,7 @@ TEST(EncodeCli, TheExtensionPicksTheFormat) {
                   .out,
               "TAG:major_brand=qt  \n");
     for (const char* name : {"m.mp4", "m.webm", "m.mov"})
-        EXPECT_EQ(probe(out / name, "stream=pix_fmt"), "pix_fmt=yuv420p\n") << name;
+        EXPECT_EQ(probe_entries(out / name, "stream=pix_fmt"), "pix_fmt=yuv420p\n") << name;
     EXPECT_EQ(frame_rate(out / "m.webm"), "r_frame_rate=12/1\n");
     // Renamed into place: no temporaries left.
     EXPECT_EQ(files_in(out), (std::vector<std::string>{"UPPER.GIF", "m.gif", "m.mov", "m.mp4", "m.webm"}));
@@ -201,7 +201,7 @@ TEST(EncodeCli, FramesBeyondTheMoviesEndAreRefused) {
     fs::remove(frames / "frame_0015.png");
     const auto r = encode(frames.string() + " " + (dir / "x.mp4").string() + " --movie " + movie);
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_EQ(probe(dir / "x.mp4", "stream=nb_read_frames"), "nb_read_frames=12\n");
+    EXPECT_EQ(probe_entries(dir / "x.mp4", "stream=nb_read_frames"), "nb_read_frames=12\n");
 }
 
 TEST(EncodeCli, TooFewFramesAreRefusedUntilResumed) {
@@ -224,7 +224,7 @@ TEST(EncodeCli, TooFewFramesAreRefusedUntilResumed) {
     render_frames(dir, "--resume");
     r = encode(encode_args);
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_EQ(probe(dir / "x.webm", "stream=nb_read_frames"), "nb_read_frames=12\n");
+    EXPECT_EQ(probe_entries(dir / "x.webm", "stream=nb_read_frames"), "nb_read_frames=12\n");
 }
 
 TEST(EncodeCli, RawFramesTakeTheSameFormats) {
@@ -245,7 +245,7 @@ TEST(EncodeCli, RawFramesTakeTheSameFormats) {
         EXPECT_EQ(r.out, "encoded raw frames from standard input at 12 fps into " + video.string() + " (" + c.label +
                              ")\n");
         EXPECT_EQ(format_of(video), c.probed) << c.file;
-        EXPECT_EQ(probe(video, "stream=nb_read_frames"), "nb_read_frames=12\n") << c.file;
+        EXPECT_EQ(probe_entries(video, "stream=nb_read_frames"), "nb_read_frames=12\n") << c.file;
     }
     EXPECT_EQ(frame_rate(dir / "r.webm"), "r_frame_rate=12/1\n");
     const auto r = run_script("encode.sh", "--raw 64x64 " + (dir / "r.avi").string() + " --fps 12 </dev/null");

@@ -177,7 +177,7 @@ TEST(EncodeScript, RefusesEmptyFoldersAndGaps) {
 }
 
 // ffprobe's key=value lines for a video's first stream.
-std::string probe(const fs::path& mp4) {
+std::string probe_video(const fs::path& mp4) {
     return run_shell("ffprobe -v error -select_streams v:0 -count_frames -show_entries "
                      "stream=width,height,nb_read_frames -of default=noprint_wrappers=1 " +
                      mp4.string())
@@ -221,7 +221,7 @@ TEST(EncodeScript, OddSidesArePaddedToEvenOnBothPaths) {
                                 " --raw-pix-fmt yuv420p --quiet");
     ASSERT_EQ(yuv.status, 0) << yuv.err;
     for (const fs::path& mp4 : {dir / "out" / "odd.mp4", dir / "files.mp4", dir / "yuv" / "odd.mp4"})
-        EXPECT_EQ(probe(mp4), "width=34\nheight=18\nnb_read_frames=6\n") << mp4;
+        EXPECT_EQ(probe_video(mp4), "width=34\nheight=18\nnb_read_frames=6\n") << mp4;
     EXPECT_EQ(slurp(dir / "out" / "odd.mp4"), slurp(dir / "files.mp4"));
 }
 
@@ -249,7 +249,7 @@ TEST(MakeMovies, RendersAndEncodesMoviesSideBySide) {
     EXPECT_EQ(files_in(dir / "out"), (std::vector<std::string>{"a", "a.mp4", "b", "b.mp4"}));
     for (const char* name : {"a", "b"}) {
         EXPECT_EQ(frames_in(dir / "out" / name).size(), 12u);
-        EXPECT_EQ(probe(dir / "out" / (std::string(name) + ".mp4")), "width=48\nheight=32\nnb_read_frames=12\n");
+        EXPECT_EQ(probe_video(dir / "out" / (std::string(name) + ".mp4")), "width=48\nheight=32\nnb_read_frames=12\n");
         // Against encoding the frame files with one x264 thread too (ffmpeg
         // converting to yuv420p): both videos are as close to the frames.
         const auto e = run_script("encode.sh", (dir / "out" / name).string() + " " +

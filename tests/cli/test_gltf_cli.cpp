@@ -79,7 +79,7 @@ std::vector<dvec3> exported(const std::string& args, const fs::path& dir) {
     return v;
 }
 
-void expect_near(const std::vector<dvec3>& got, const std::vector<dvec3>& want) {
+void expect_points_near(const std::vector<dvec3>& got, const std::vector<dvec3>& want) {
     ASSERT_EQ(got.size(), want.size());
     for (size_t i = 0; i < got.size(); ++i)
         for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[i][k], want[i][k], 1e-9) << "vertex " << i << " axis " << k;
@@ -93,10 +93,10 @@ void expect_near(const std::vector<dvec3>& got, const std::vector<dvec3>& want) 
 TEST(GltfCli, ExportIsTheWorldAfterHierarchyAndAnimation) {
     const fs::path dir = model_dir("gltf_export");
     const std::string file = (dir / "model.gltf").string();
-    expect_near(exported(file + " --frame 15", dir), {{2, -6, 5.5}, {4, -6, 5.5}, {2, -6, 7.5}});
+    expect_points_near(exported(file + " --frame 15", dir), {{2, -6, 5.5}, {4, -6, 5.5}, {2, -6, 7.5}});
     // At 10 fps frame 5 is the same 0.5 s; frame 0 has base at the origin.
-    expect_near(exported(file + " --frame 5 --fps 10", dir), {{2, -6, 5.5}, {4, -6, 5.5}, {2, -6, 7.5}});
-    expect_near(exported(file + " --frame 0", dir), {{2, -6, 4}, {4, -6, 4}, {2, -6, 6}});
+    expect_points_near(exported(file + " --frame 5 --fps 10", dir), {{2, -6, 5.5}, {4, -6, 5.5}, {2, -6, 7.5}});
+    expect_points_near(exported(file + " --frame 0", dir), {{2, -6, 4}, {4, -6, 4}, {2, -6, 6}});
 }
 
 // Placed in a YAML scene, translated by (10, 0, 0) after the z-up turn.
@@ -104,7 +104,7 @@ TEST(GltfCli, ExportOfAYamlSceneHoldingTheFile) {
     const fs::path dir = model_dir("gltf_export_yaml");
     write_yaml_scene(dir, "view_point: [0, -20, 5], look_at: [0, 1, 0]",
                      "{type: gltf, name: model, file: model.gltf, transform: {translate: [10, 0, 0]}}");
-    expect_near(exported((dir / "scene.yaml").string(), dir), {{12, -6, 4}, {14, -6, 4}, {12, -6, 6}});
+    expect_points_near(exported((dir / "scene.yaml").string(), dir), {{12, -6, 4}, {14, -6, 4}, {12, -6, 6}});
 }
 
 // Vertex colours are written where a mesh has them: a coloured OBJ placed

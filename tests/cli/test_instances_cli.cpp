@@ -189,7 +189,7 @@ TEST(InstancesCli, GroupsComposeTheirTransformsOutwards) {
     EXPECT_TRUE(near(s.triangles[0].v2, {10, 0, 2}));
 }
 
-fs::path render(const fs::path& file, const std::string& extra, const std::string& out_name) {
+fs::path render_placed(const fs::path& file, const std::string& extra, const std::string& out_name) {
     const fs::path out = file.parent_path() / out_name;
     const auto r = run_firsthit("render " + file.string() + " " + extra + " --quiet -o " + out.string());
     EXPECT_EQ(r.status, 0) << r.err;
@@ -221,11 +221,11 @@ TEST(InstancesCli, AnimatedGroupsAndInstancesAreTheStaticSceneAtEachKey) {
     moved.replace(moved.find("transform: {translate: [3, 0, 0]}"), 33,
                   "transform: {translate: [3, 0, 0], scale: [1, 2, -0.5]}");
     std::ofstream(dir / "moved.yaml") << kHead << moved;
-    const fs::path frame10 = render(dir / "movie.yaml", "--frame 10", "frame10.png");
-    const fs::path still = render(dir / "moved.yaml", "", "still.png");
+    const fs::path frame10 = render_placed(dir / "movie.yaml", "--frame 10", "frame10.png");
+    const fs::path still = render_placed(dir / "moved.yaml", "", "still.png");
     EXPECT_EQ(slurp(frame10), slurp(still));
     // Frame 0 is the file's scene, and the movie did move things.
-    EXPECT_EQ(slurp(render(dir / "movie.yaml", "--frame 0", "frame0.png")), slurp(render(dir / "scene.yaml", "", "s.png")));
+    EXPECT_EQ(slurp(render_placed(dir / "movie.yaml", "--frame 0", "frame0.png")), slurp(render_placed(dir / "scene.yaml", "", "s.png")));
     EXPECT_NE(slurp(frame10), slurp(dir / "s.png"));
 }
 
@@ -246,8 +246,8 @@ TEST(InstancesCli, InstancesLookLikeTheirCopiesAsMeshes) {
     std::ofstream(dir / "meshes.yaml") << kHead << meshes;
     for (const char* precision : {"float", "double"}) {
         const std::string flags = std::string("--precision ") + precision + " --resolution 400x300";
-        const Image a = read_png(render(dir / "scene.yaml", flags, "a.png").string());
-        const Image b = read_png(render(dir / "meshes.yaml", flags, "b.png").string());
+        const Image a = read_png(render_placed(dir / "scene.yaml", flags, "a.png").string());
+        const Image b = read_png(render_placed(dir / "meshes.yaml", flags, "b.png").string());
         ASSERT_GT(a.width, 0);
         // At most 0.1% of the pixels with any channel off.
         const ImageError e = compare_images(a, b);
@@ -286,7 +286,7 @@ TEST(InstancesCli, MovingInstancesAreTheSameBytesForAnyThreadsShardsAndResume) {
         EXPECT_EQ(slurp(dir / "threads" / name), ref) << name;
         EXPECT_EQ(slurp(dir / "shards" / name), ref) << name;
         EXPECT_EQ(slurp(dir / "resumed" / name), ref) << name;
-        EXPECT_EQ(slurp(render(dir / "movie.yaml", "--frame " + std::to_string(i), "one.png")), ref) << name;
+        EXPECT_EQ(slurp(render_placed(dir / "movie.yaml", "--frame " + std::to_string(i), "one.png")), ref) << name;
     }
     EXPECT_NE(slurp(dir / "ref" / "frame_0000.png"), slurp(dir / "ref" / "frame_0007.png"));
     EXPECT_EQ(slurp(dir / "ref" / "frame_0007.png"), slurp(dir / "ref" / "frame_0009.png"));

@@ -26,7 +26,7 @@ constexpr int kSide = kSlowdown > 1 ? 48 : 96;
 constexpr int kSpp = kSlowdown > 1 ? 2 : 8;
 
 // The report's scene at side x side and a 60-frame orbit of it at `spp`.
-fs::path movie_dir(const std::string& name, int side, int spp) {
+fs::path interrupted_movie_dir(const std::string& name, int side, int spp) {
     const fs::path dir = fresh_dir(name);
     std::string scene = slurp(source_path("animations/scene.yaml"));
     scene = std::regex_replace(scene, std::regex("width: 800"), "width: " + std::to_string(side));
@@ -124,7 +124,7 @@ fs::path reference_run(const fs::path& dir) {
 }
 
 TEST(InterruptCli, SigkillLeavesOnlyWholeFramesAndResumeCompletesThem) {
-    const fs::path dir = movie_dir("kill", kSide, kSpp);
+    const fs::path dir = interrupted_movie_dir("kill", kSide, kSpp);
     const fs::path ref = reference_run(dir);
     const fs::path out = dir / "out";
     // Killed twice, the second time while resuming, then resumed to the end.
@@ -146,7 +146,7 @@ TEST(InterruptCli, SigkillLeavesOnlyWholeFramesAndResumeCompletesThem) {
 }
 
 TEST(InterruptCli, SigintAndSigtermStopWithinASecondAndResumeCompletesThem) {
-    const fs::path dir = movie_dir("sigint", kSide, kSpp);
+    const fs::path dir = interrupted_movie_dir("sigint", kSide, kSpp);
     const fs::path ref = reference_run(dir);
     for (const int sig : {SIGINT, SIGTERM}) {
         SCOPED_TRACE(sig == SIGINT ? "SIGINT" : "SIGTERM");
@@ -186,7 +186,7 @@ Background start_slow_frames(const fs::path& dir, const fs::path& out) {
 TEST(InterruptCli, SlowFramesInFlightAreAbandonedWithinASecond) {
     // Each frame takes seconds (192 x 192 pixels at 4096 samples): the run does not
     // wait for them, writes nothing and still stops within a second.
-    const fs::path dir = movie_dir("slow", 192, 4096);
+    const fs::path dir = interrupted_movie_dir("slow", 192, 4096);
     const fs::path out = dir / "out";
     const Background b = start_slow_frames(dir, out);
     ASSERT_GT(b.pid, 0);
@@ -202,7 +202,7 @@ TEST(InterruptCli, SlowFramesInFlightAreAbandonedWithinASecond) {
 }
 
 TEST(InterruptCli, SecondSignalStopsAtOnce) {
-    const fs::path dir = movie_dir("twice", 192, 4096);
+    const fs::path dir = interrupted_movie_dir("twice", 192, 4096);
     const fs::path out = dir / "out";
     const Background b = start_slow_frames(dir, out);
     ASSERT_GT(b.pid, 0);

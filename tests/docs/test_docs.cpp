@@ -73,7 +73,6 @@ std::vector<std::string> lines_of(const std::string& text) {
     return lines;
 }
 
-
 std::string trim_left(const std::string& s) {
     const size_t first = s.find_first_not_of(" \t");
     return first == std::string::npos ? "" : s.substr(first);

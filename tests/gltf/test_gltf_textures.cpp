@@ -198,7 +198,7 @@ void expect_uvs(const std::vector<dvec2>& got, const std::vector<dvec2>& want, c
     }
 }
 
-std::string transformed(const std::string& transform, int tex_coord = -1) {
+std::string transformed_file(const std::string& transform, int tex_coord = -1) {
     return "{\"index\": 0" + (tex_coord >= 0 ? ", \"texCoord\": " + std::to_string(tex_coord) : std::string()) +
            ", \"extensions\": {\"KHR_texture_transform\": " + transform + "}}";
 }
@@ -218,9 +218,9 @@ TEST(GltfTextureTransform, OffsetRotationAndScaleEachAlone) {
     const std::string json = quads_file(
         {{-1, 1, -1, 1, 0, 0}, {-1, 1, -1, 1, 1, 1}, {-1, 1, -1, 1, 2, 2}},
         std::string(kTransformUsed) + ",\n" +
-            surfaces({material("[1, 1, 1, 1]", transformed("{\"offset\": [0.5, -0.25]}")),
-                      material("[1, 1, 1, 1]", transformed("{\"rotation\": " + num(kPi / 2) + "}")),
-                      material("[1, 1, 1, 1]", transformed("{\"scale\": [2, 3]}"))},
+            surfaces({material("[1, 1, 1, 1]", transformed_file("{\"offset\": [0.5, -0.25]}")),
+                      material("[1, 1, 1, 1]", transformed_file("{\"rotation\": " + num(kPi / 2) + "}")),
+                      material("[1, 1, 1, 1]", transformed_file("{\"scale\": [2, 3]}"))},
                      {{-1, 0}}, {image_json(rgb_png(1, 1, 9, 9, 9))}));
     const Scene s = load(json).scene;
     ASSERT_EQ(s.meshes.size(), 3u);
@@ -243,7 +243,7 @@ TEST(GltfTextureTransform, AllTogetherOnTheSetItsTexCoordNames) {
     const std::string json = quads_file(
         {q}, std::string(kTransformUsed) + ",\n" +
                  surfaces({material("[1, 1, 1, 1]",
-                                    transformed("{\"offset\": [0.5, -0.25], \"rotation\": " + num(kPi / 6) +
+                                    transformed_file("{\"offset\": [0.5, -0.25], \"rotation\": " + num(kPi / 6) +
                                                     ", \"scale\": [2, 3], \"texCoord\": 1}",
                                                 0))},
                           {{-1, 0}}, {image_json(rgb_png(1, 1, 9, 9, 9))}));
@@ -287,7 +287,7 @@ TEST(GltfTextureTransform, BadTransformsAreRefused) {
     for (const Case& c : cases) {
         const std::string json = quads_file(
             {{-1, 1, -1, 1, 0, 0}}, std::string(kTransformUsed) + ",\n" +
-                                        surfaces({material("[1, 1, 1, 1]", transformed(c.transform))}, {{-1, 0}},
+                                        surfaces({material("[1, 1, 1, 1]", transformed_file(c.transform))}, {{-1, 0}},
                                                  {image_json(rgb_png(1, 1, 9, 9, 9))}));
         expect_input_error([&] { load(json); }, "t.gltf", c.phrase);
     }
@@ -311,7 +311,7 @@ TEST(GltfTextureTransform, TransformedTextureCoordinatesStayFinite) {
         std::string(kTransformUsed) + R"(, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
 "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "material": 0}]}],
 "accessors": [)" + accessor(p, kFloat, 3, "VEC3") + ", " + accessor(t, kFloat, 3, "VEC2") + "],\n" +
-            surfaces({material("[1, 1, 1, 1]", transformed("{\"scale\": [1e300, 1]}"))}, {{-1, 0}},
+            surfaces({material("[1, 1, 1, 1]", transformed_file("{\"scale\": [1e300, 1]}"))}, {{-1, 0}},
                      {image_json(rgb_png(1, 1, 9, 9, 9))}),
         bin);
     expect_refused(json, "mesh 0 primitive 0: KHR_texture_transform takes TEXCOORD_0 0 past a double's range");
@@ -322,7 +322,7 @@ TEST(GltfTextureTransform, ItsTexCoordReplacesTheTextureInfosWhichNeedNotExist) 
     // exists, and it is what the texture reads.
     const std::string json = quads_file(
         {{-1, 1, -1, 1, 0, 0}}, std::string(kTransformUsed) + ",\n" +
-                                    surfaces({material("[1, 1, 1, 1]", transformed("{\"texCoord\": 0}", 1))},
+                                    surfaces({material("[1, 1, 1, 1]", transformed_file("{\"texCoord\": 0}", 1))},
                                              {{-1, 0}}, {image_json(rgb_png(1, 1, 9, 9, 9))}));
     EXPECT_EQ(load(json).scene.meshes[0].mesh->uvs.size(), 4u);
 }
@@ -402,7 +402,7 @@ TEST(GltfTextureRender, ATextureTransformMovesWhatThePixelsShow) {
     const std::string json = quads_file(
         {{-1, 1, -1, 1, 0, 0}},
         std::string(kTransformUsed) + ",\n" +
-            surfaces({material("[1, 1, 1, 1]", transformed("{\"offset\": [1, 0], \"scale\": [-1, 1]}"))}, {{0, 0}},
+            surfaces({material("[1, 1, 1, 1]", transformed_file("{\"offset\": [1, 0], \"scale\": [-1, 1]}"))}, {{0, 0}},
                      {image_json(rgba_png(2, 1, kRedBlue))}, {sampler_json(kClamp, kClamp, kNearest)}));
     for (const Precision p : kPrecisions) {
         const Image im = top_view(lit(json), p);
@@ -428,7 +428,7 @@ TEST(GltfTextureRender, ATextureTransformOfHugeScaleStillReadsTheTexture) {
     const std::string json = quads_file(
         {{-1, 1, -1, 1, 0, 0}},
         std::string(kTransformUsed) + ",\n" +
-            surfaces({material("[1, 1, 1, 1]", transformed("{\"scale\": [1e300, 1e300]}"))}, {{-1, 0}},
+            surfaces({material("[1, 1, 1, 1]", transformed_file("{\"scale\": [1e300, 1e300]}"))}, {{-1, 0}},
                      {image_json(rgb_png(2, 2, 188, 188, 188))}));
     for (const Precision p : kPrecisions) expect_columns(top_view(lit(json), p), 0, 8, {103, 103, 103}, precision_name(p));
 }
@@ -639,10 +639,10 @@ TEST(GltfTextureBadImages, NeitherPngNorJpeg) {
     const std::string gif = "GIF89a: six bytes of signature, then anything";
     expect_refused(textured_file({{-1, 0}}, {image_json(gif)}), "image 0: not a PNG or JPEG image");
     expect_refused(textured_file({{-1, 0}}, {image_json(gif, ", \"name\": \"leaf\"")}),
-            "image 0 ('leaf'): not a PNG or JPEG image");
+                   "image 0 ('leaf'): not a PNG or JPEG image");
     // The first bytes decide, not the mimeType.
     expect_refused(textured_file({{-1, 0}}, {"{\"uri\": \"data:image/png;base64," + base64("plain text, not pixels") + "\"}"}),
-            "image 0: not a PNG or JPEG image");
+                   "image 0: not a PNG or JPEG image");
 }
 
 TEST(GltfTextureBadImages, ATruncatedPngCannotBeDecoded) {
@@ -663,9 +663,9 @@ TEST(GltfTextureBadImages, AHeaderClaimingTooManyTexels) {
     // Refused from the header alone, before any pixel is allocated: 20000 a
     // side (grey), and 16384 x 4097 = 67,125,248 texels in all (RGB).
     expect_refused(textured_file({{-1, 0}}, {image_json(png_header(20000, 20000, 0))}),
-            "image 0: 20000 x 20000 texels (the limit is 16,384 a side and 67,108,864 in all)");
+                   "image 0: 20000 x 20000 texels (the limit is 16,384 a side and 67,108,864 in all)");
     expect_refused(textured_file({{-1, 0}}, {image_json(png_header(16384, 4097, 2))}),
-            "image 0: 16384 x 4097 texels (the limit is 16,384 a side and 67,108,864 in all)");
+                   "image 0: 16384 x 4097 texels (the limit is 16,384 a side and 67,108,864 in all)");
     expect_refused(textured_file({{-1, 0}}, {image_json(png_header(40000, 1, 6))}), "image 0: 40000 x 1 texels (the limit");
 }
 
@@ -673,7 +673,7 @@ TEST(GltfTextureBadImages, AnRgbaHeaderClaimingTooManyTexelsNamesTheLimit) {
     // The same 20000 x 20000 claim in RGBA, as a base colour texture with
     // alpha is: the same limit, the same message.
     expect_refused(textured_file({{-1, 0}}, {image_json(png_header(20000, 20000, 6))}),
-            "image 0: 20000 x 20000 texels (the limit is 16,384 a side and 67,108,864 in all)");
+                   "image 0: 20000 x 20000 texels (the limit is 16,384 a side and 67,108,864 in all)");
 }
 
 TEST(GltfTextureBadImages, AnImageFileThatIsNotThere) {
@@ -685,24 +685,24 @@ TEST(GltfTextureBadImages, AnImageFileThatIsNotThere) {
 TEST(GltfTextureBadImages, SamplersAndTexturesThatAreNotGltfs) {
     const std::string red = image_json(rgb_png(1, 1, 255, 0, 0));
     expect_refused(textured_file({{0, 0}}, {red}, {sampler_json(12345, kRepeat)}),
-            "texture 0: wrap mode 12345 is not glTF's (10497, 33648 or 33071)");
+                   "texture 0: wrap mode 12345 is not glTF's (10497, 33648 or 33071)");
     expect_refused(textured_file({{0, 0}}, {red}, {sampler_json(kRepeat, 9729)}),
-            "texture 0: wrap mode 9729 is not glTF's (10497, 33648 or 33071)");
+                   "texture 0: wrap mode 9729 is not glTF's (10497, 33648 or 33071)");
     expect_refused(textured_file({{0, 0}}, {red}, {sampler_json(kRepeat, kRepeat, 9987)}),
-            "texture 0: magFilter 9987 is not glTF's (9728 or 9729)");
+                   "texture 0: magFilter 9987 is not glTF's (9728 or 9729)");
     expect_refused(textured_file({{-1, 5}}, {red}), "texture 0: it has no image firsthit can read");
     expect_refused(textured_file({{-1, -1}}, {red}), "texture 0: it has no image firsthit can read");
     expect_refused(textured_file({{3, 0}}, {red}, {sampler_json(kRepeat, kRepeat)}), "texture 0: sampler 3 does not exist");
     // The material's texture itself missing.
     expect_refused(quads_file({{-1, 1, -1, 1, 0, 0}}, surfaces({material("[1, 1, 1, 1]", tex(2))}, {{-1, 0}}, {red})),
-            "texture 2 does not exist");
+                   "texture 2 does not exist");
 }
 
 TEST(GltfTextureBadImages, ABaseColourTextureNeedsItsTexcoordSet) {
     Quad q{-1, 1, -1, 1, 0, 0};
     q.uvs = false;
     expect_refused(quads_file({q}, surfaces({material("[1, 1, 1, 1]", tex(0))}, {{-1, 0}}, {image_json(rgb_png(1, 1, 1, 1, 1))})),
-            "mesh 0 primitive 0: its material reads TEXCOORD_0, which it does not have");
+                   "mesh 0 primitive 0: its material reads TEXCOORD_0, which it does not have");
     // Without the texture the same quad loads.
     EXPECT_NO_THROW(load(quads_file({q}, surfaces({material("[1, 1, 1, 1]")}))));
 }
@@ -754,7 +754,7 @@ TEST(GltfVertexColors, WhatTheSpecificationForbidsIsRefused) {
     q.color_type = kUnsignedByte;
     q.color_normalized = false;
     expect_refused(quads_file({q}, surfaces({material("[1, 1, 1, 1]")})),
-            "mesh 0 primitive 0: COLOR_0 is not floats or normalized unsigned bytes or shorts");
+                   "mesh 0 primitive 0: COLOR_0 is not floats or normalized unsigned bytes or shorts");
 }
 
 TEST(GltfVertexColors, TheyMultiplyTheBaseColourAndTheTexture) {

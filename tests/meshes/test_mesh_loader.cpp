@@ -215,12 +215,12 @@ void expect_cube(const MeshData& m) {
 }
 
 // The formatted error of loading `path`, the path shown as FILE.
-std::string error_of(const std::string& path, std::size_t max_triangles = kMaxMeshTriangles) {
+std::string mesh_error(const std::string& path, std::size_t max_triangles = kMaxMeshTriangles) {
     return test::check_error(path, [&](const std::string& p) { load_mesh(p, max_triangles); });
 }
 
 std::string mesh_error(const std::string& name, const std::string& content) {
-    return error_of(write_temp_file(name, content));
+    return mesh_error(write_temp_file(name, content));
 }
 
 // ---- reading ---------------------------------------------------------------------
@@ -337,10 +337,10 @@ TEST(MeshLoader, DegenerateTrianglesAreDroppedAndCounted) {
 TEST(MeshLoader, LimitOnTriangles) {
     static_assert(kMaxMeshTriangles == 5'000'000);
     const std::string path = write_temp_file("limit.obj", cube_obj());
-    EXPECT_EQ(error_of(path, 11), "FILE: error: 12 triangles is more than the limit of 11");
+    EXPECT_EQ(mesh_error(path, 11), "FILE: error: 12 triangles is more than the limit of 11");
     EXPECT_EQ(load_mesh(path, 12).triangles.size(), 12u);
     // A polygon counts as the triangles it becomes.
-    EXPECT_EQ(error_of(write_temp_file("limit_quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n"), 1),
+    EXPECT_EQ(mesh_error(write_temp_file("limit_quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n"), 1),
               "FILE: error: 2 triangles is more than the limit of 1");
 }
 
@@ -357,9 +357,9 @@ TEST(MeshLoader, NothingIsPrinted) {
     const std::string good = write_temp_file("quiet.obj", cube_obj());
     testing::internal::CaptureStdout();
     testing::internal::CaptureStderr();
-    EXPECT_NE(error_of(bad_off), "(no error)");
-    EXPECT_NE(error_of(bad_ply), "(no error)");
-    EXPECT_EQ(error_of(good), "(no error)");
+    EXPECT_NE(mesh_error(bad_off), "(no error)");
+    EXPECT_NE(mesh_error(bad_ply), "(no error)");
+    EXPECT_EQ(mesh_error(good), "(no error)");
     const std::string out = testing::internal::GetCapturedStdout();
     const std::string err = testing::internal::GetCapturedStderr();
     EXPECT_EQ(out, "");
@@ -373,10 +373,10 @@ TEST(MeshLoader, LoadsOnSeveralThreadsKeepTheirOwnMessages) {
     int bad_failed = 0, good_loaded = 0;
     std::thread a([&] {
         for (int i = 0; i < 40; ++i)
-            bad_failed += error_of(bad) == "FILE:11:7: error: a face has a vertex index out of range";
+            bad_failed += mesh_error(bad) == "FILE:11:7: error: a face has a vertex index out of range";
     });
     std::thread b([&] {
-        for (int i = 0; i < 40; ++i) good_loaded += error_of(good) == "(no error)";
+        for (int i = 0; i < 40; ++i) good_loaded += mesh_error(good) == "(no error)";
     });
     a.join();
     b.join();
@@ -387,10 +387,10 @@ TEST(MeshLoader, LoadsOnSeveralThreadsKeepTheirOwnMessages) {
 // ---- bad files ---------------------------------------------------------------------
 
 TEST(MeshLoaderErrors, MissingFileAndFolder) {
-    EXPECT_EQ(error_of(test::temp_dir().string() + "/no_such.obj"), "FILE: error: cannot open mesh file: no such file");
+    EXPECT_EQ(mesh_error(test::temp_dir().string() + "/no_such.obj"), "FILE: error: cannot open mesh file: no such file");
     const std::filesystem::path folder = test::temp_dir() / "folder.obj";
     std::filesystem::create_directories(folder);
-    EXPECT_EQ(error_of(folder.string()), "FILE: error: cannot open mesh file: it is a folder");
+    EXPECT_EQ(mesh_error(folder.string()), "FILE: error: cannot open mesh file: it is a folder");
 }
 
 TEST(MeshLoaderErrors, UnknownExtension) {

@@ -36,7 +36,7 @@ Scene edge_scene() {
     return s;
 }
 
-FrameResult render(const Scene& s, RenderSettings settings, ThreadPool* pool = nullptr) {
+FrameResult render_with(const Scene& s, RenderSettings settings, ThreadPool* pool = nullptr) {
     return render_frame(s, s.cameras.front(), settings, pool);
 }
 
@@ -48,10 +48,10 @@ RenderSettings samples(int spp) {
 
 TEST(Accuracy, ErrorFallsAsSamplesRise) {
     const Scene s = edge_scene();
-    const Image reference = render(s, samples(256)).image;
+    const Image reference = render_with(s, samples(256)).image;
     double previous = 1e9;
     for (int spp : {1, 4, 16, 64}) {
-        const double rmse = compare_images(render(s, samples(spp)).image, reference).rmse;
+        const double rmse = compare_images(render_with(s, samples(spp)).image, reference).rmse;
         EXPECT_LT(rmse, previous) << spp << " samples";
         previous = rmse;
     }
@@ -60,12 +60,12 @@ TEST(Accuracy, ErrorFallsAsSamplesRise) {
 
 TEST(Accuracy, AdaptiveSpendsSamplesOnlyAtEdges) {
     const Scene s = edge_scene();
-    const Image reference = render(s, samples(256)).image;
-    const FrameResult uniform = render(s, samples(16));
+    const Image reference = render_with(s, samples(256)).image;
+    const FrameResult uniform = render_with(s, samples(16));
     RenderSettings a = samples(1);
     a.adaptive = true;
     a.adaptive_samples = 16;
-    const FrameResult adaptive = render(s, a);
+    const FrameResult adaptive = render_with(s, a);
     // The sphere's silhouette: a ring of a few hundred of the 2304 pixels.
     EXPECT_GT(adaptive.refined_pixels, 50u);
     EXPECT_LT(adaptive.refined_pixels, 600u);
@@ -75,7 +75,7 @@ TEST(Accuracy, AdaptiveSpendsSamplesOnlyAtEdges) {
               1.25 * compare_images(uniform.image, reference).rmse);
     // The same bytes for any thread count.
     ThreadPool two(2);
-    EXPECT_EQ(render(s, a, &two).image.rgb, adaptive.image.rgb);
+    EXPECT_EQ(render_with(s, a, &two).image.rgb, adaptive.image.rgb);
 }
 
 // Is the first surface seen through pixel (x, y) glazed?
@@ -93,11 +93,11 @@ TEST(Accuracy, OneMoreLevelOfDepthChangesOnlyGlazedPixels) {
     s.cameras = {cam};
     RenderSettings r;
     r.max_depth = 0;
-    FrameResult shallow = render(s, r);
+    FrameResult shallow = render_with(s, r);
     EXPECT_EQ(shallow.counts.reflection, 0u);
     for (int depth = 1; depth <= 4; ++depth) {
         r.max_depth = depth;
-        const FrameResult deep = render(s, r);
+        const FrameResult deep = render_with(s, r);
         int changed = 0;
         for (int y = 0; y < cam.height; ++y)
             for (int x = 0; x < cam.width; ++x)

@@ -83,7 +83,7 @@ TYPED_TEST_SUITE(BvhAgainstBruteForce, Precisions);
 // at a random point of a random triangle, and aimed exactly at a triangle's
 // vertex or edge midpoint (where triangles tie).
 template <typename T>
-RayPacket<T> random_packet(const Scene& s, std::mt19937_64& rng, int kind) {
+RayPacket<T> random_scene_packet(const Scene& s, std::mt19937_64& rng, int kind) {
     std::uniform_real_distribution<double> u(-8, 8), w(0, 1);
     std::uniform_int_distribution<size_t> pick(0, s.triangles.size() - 1);
     RayPacket<T> p;
@@ -118,7 +118,7 @@ Tally against_brute_force(const FlatGeometry<T>& f, const Scene& s, unsigned see
     std::uniform_real_distribution<double> len(0, 20);
     Tally n;
     for (int k = 0; k < rays / kLanes<T>; ++k) {
-        const RayPacket<T> ray = random_packet<T>(s, rng, k % 3);
+        const RayPacket<T> ray = random_scene_packet<T>(s, rng, k % 3);
         const LaneInts<T> active = first_lanes<T>(kLanes<T> - (k % 4 == 0 ? 1 : 0));
         const HitLanes<T> bvh = closest_hits(f, ray, active);
         const HitLanes<T> all = brute_force_hits(f, ray, active);

@@ -42,7 +42,7 @@ Scene floor_scene(int directional_lights, bool glazed) {
     return s;
 }
 
-FrameResult render(const Scene& s, bool prune = true, int depth = 5) {
+FrameResult render_planned(const Scene& s, bool prune = true, int depth = 5) {
     RenderSettings settings;
     settings.max_depth = depth;
     settings.prune = prune;
@@ -51,7 +51,7 @@ FrameResult render(const Scene& s, bool prune = true, int depth = 5) {
 
 TEST(EffectPlan, ShadowRaysAreLightsTimesLitHits) {
     for (int k : {0, 1, 3}) {
-        const auto r = render(floor_scene(k, false));
+        const auto r = render_planned(floor_scene(k, false));
         EXPECT_EQ(r.counts.primary, 200u);
         EXPECT_EQ(r.counts.shadow, 200u * unsigned(k)) << k << " lights";
         EXPECT_EQ(r.counts.reflection, 0u) << "nothing is glazed";
@@ -62,14 +62,14 @@ TEST(EffectPlan, ShadowRaysAreLightsTimesLitHits) {
 TEST(EffectPlan, GlazedFloorReflectsOncePerPixelAndOffLightsCastNothing) {
     Scene s = floor_scene(2, true);
     // The reflected rays go up into the sky: one each.
-    EXPECT_EQ(render(s).counts.reflection, 200u);
-    EXPECT_EQ(render(s, true, 0).counts.reflection, 0u);
+    EXPECT_EQ(render_planned(s).counts.reflection, 200u);
+    EXPECT_EQ(render_planned(s, true, 0).counts.reflection, 0u);
     keep_only_lights(s, {"ambient", "sun1"});
-    const auto r = render(s);
+    const auto r = render_planned(s);
     EXPECT_EQ(r.counts.shadow, 200u);  // sun0 is off: no shadow rays for it
     EXPECT_EQ(r.plan.skipped, std::vector<std::string>{"light 'sun0': off"});
     keep_only_lights(s, {"ambient"});
-    EXPECT_EQ(render(s).counts.shadow, 0u);  // only ambient light: none at all
+    EXPECT_EQ(render_planned(s).counts.shadow, 0u);  // only ambient light: none at all
 }
 
 TEST(EffectPlan, ReasonsForWhatIsSkipped) {
@@ -99,8 +99,8 @@ TEST(EffectPlan, PruningNeverChangesAByte) {
                                                                              : "orthographic");
         cam.width = cam.height = 200;
         s.cameras = {cam};
-        const auto pruned = render(s, true);
-        const auto full = render(s, false);
+        const auto pruned = render_planned(s, true);
+        const auto full = render_planned(s, false);
         EXPECT_EQ(pruned.image.rgb, full.image.rgb);
         EXPECT_LT(pruned.counts.shadow, full.counts.shadow);
         EXPECT_EQ(pruned.counts.primary, full.counts.primary);

@@ -119,7 +119,7 @@ void brute_force(const TwoLevels<T>& g, const RayPacket<T>& ray, const LaneInts<
 // Random rays: half from anywhere in a box toward anywhere, half aimed at a
 // random instance's centre (so most packets meet instances).
 template <typename T>
-RayPacket<T> random_packet(std::mt19937& rng, const Scene& s) {
+RayPacket<T> random_instanced_packet(std::mt19937& rng, const Scene& s) {
     std::uniform_real_distribution<double> u(-14, 14), small(-1, 1);
     RayPacket<T> p;
     for (int lane = 0; lane < kLanes<T>; ++lane) {
@@ -164,7 +164,7 @@ TYPED_TEST(InstanceWalk, NearestHitIsBruteForcesForAMillionRays) {
     const TwoLevels<T> g(scene);
     long hits_on_instances = 0, checked = 0;
     for (int n = 0; n < 1'000'000 / kLanes<T>; ++n) {
-        const LaneInts<T> on = expect_brute_force(g, random_packet<T>(rng, scene), n);
+        const LaneInts<T> on = expect_brute_force(g, random_instanced_packet<T>(rng, scene), n);
         if (::testing::Test::HasFailure()) return;  // the first difference is enough
         checked += kLanes<T>;
         hits_on_instances += count(on >= 0);
@@ -180,7 +180,7 @@ TYPED_TEST(InstanceWalk, NearestHitIsBruteForcesForASmallMesh) {
     const TwoLevels<T> g(scene);
     long hits_on_instances = 0;
     for (int n = 0; n < 100'000 / kLanes<T>; ++n) {
-        const LaneInts<T> on = expect_brute_force(g, random_packet<T>(rng, scene), n);
+        const LaneInts<T> on = expect_brute_force(g, random_instanced_packet<T>(rng, scene), n);
         if (::testing::Test::HasFailure()) return;  // the first difference is enough
         hits_on_instances += count(on >= 0);
     }
@@ -196,7 +196,7 @@ TYPED_TEST(InstanceWalk, ShadowRaysAreBlockedExactlyWhenBruteForceFindsABlocker)
     std::uniform_real_distribution<T> reach(0.5, 30);
     long blocked_by_instances = 0;
     for (int n = 0; n < 200'000 / kLanes<T>; ++n) {
-        const RayPacket<T> ray = random_packet<T>(rng, scene);
+        const RayPacket<T> ray = random_instanced_packet<T>(rng, scene);
         Lanes<T> t_max;
         for (int lane = 0; lane < kLanes<T>; ++lane) t_max[lane] = reach(rng);
         const LaneInts<T> blocked = occluded(g.world, g.instances.get(), ray, t_max, all);
@@ -231,7 +231,7 @@ TYPED_TEST(InstanceWalk, CoincidentInstancesGoToTheFirst) {
     const TwoLevels<T> g(scene);
     long ties = 0;
     for (int n = 0; n < 50'000 / kLanes<T>; ++n) {
-        const LaneInts<T> on = expect_brute_force(g, random_packet<T>(rng, scene), n);
+        const LaneInts<T> on = expect_brute_force(g, random_instanced_packet<T>(rng, scene), n);
         if (::testing::Test::HasFailure()) return;  // the first difference is enough
         ties += count((on >= 0) & ((on < 3) | (on == 5)));
     }

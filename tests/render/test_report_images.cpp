@@ -42,7 +42,7 @@ Camera movie_camera(Projection p, dvec3 view_point) {
     return c;
 }
 
-FrameResult render(const Scene& s, const Camera& c, ThreadPool* pool, Precision p = Precision::float64) {
+FrameResult render_view(const Scene& s, const Camera& c, ThreadPool* pool, Precision p = Precision::float64) {
     return render_frame(s, c, report_settings(p), pool);
 }
 
@@ -50,7 +50,7 @@ TEST(ReportImages, Movie1Frame0) {
     Scene s = report_scene();
     keep_only_lights(s, {"ambient", "spot"});
     ThreadPool pool(2);
-    const auto r = render(s, movie_camera(Projection::perspective, {-10, -10, 31}), &pool);
+    const auto r = render_view(s, movie_camera(Projection::perspective, {-10, -10, 31}), &pool);
     expect_pixels(r.image, {{400, 400, {255, 255, 255}}, {100, 700, {30, 29, 18}},
                             {200, 420, {59, 58, 46}},    {520, 260, {45, 43, 32}},
                             {560, 380, {75, 74, 62}},    {650, 150, {22, 19, 10}}});
@@ -61,7 +61,7 @@ TEST(ReportImages, Movie2Frame0) {
     Scene s = report_scene();
     keep_only_lights(s, {"ambient", "directional"});
     ThreadPool pool(2);
-    const auto r = render(s, movie_camera(Projection::orthographic, {-10, -40, 41}), &pool);
+    const auto r = render_view(s, movie_camera(Projection::orthographic, {-10, -40, 41}), &pool);
     expect_pixels(r.image, {{400, 400, {206, 204, 179}}, {100, 700, {211, 209, 179}},
                             {200, 420, {19, 18, 7}},     {520, 260, {124, 123, 108}},
                             {560, 380, {204, 204, 185}}, {650, 150, {191, 187, 166}}});
@@ -70,7 +70,7 @@ TEST(ReportImages, Movie2Frame0) {
 TEST(ReportImages, SceneFilePerspectiveAllLights) {
     const Scene s = report_scene();
     ThreadPool pool(2);
-    const auto r = render(s, *s.find_camera("perspective"), &pool);
+    const auto r = render_view(s, *s.find_camera("perspective"), &pool);
     expect_pixels(r.image, {{400, 400, {255, 255, 255}}, {100, 700, {255, 255, 255}},
                             {200, 420, {19, 16, 7}},     {520, 260, {255, 255, 118}},
                             {560, 380, {240, 237, 211}}, {650, 150, {255, 138, 0}}});
@@ -79,7 +79,7 @@ TEST(ReportImages, SceneFilePerspectiveAllLights) {
 TEST(ReportImages, SceneFileOrthographicAllLights) {
     const Scene s = report_scene();
     ThreadPool pool(2);
-    const auto r = render(s, *s.find_camera("orthographic"), &pool);
+    const auto r = render_view(s, *s.find_camera("orthographic"), &pool);
     expect_pixels(r.image, {{400, 400, {255, 255, 255}}, {100, 700, {255, 255, 255}},
                             {200, 420, {109, 106, 96}},  {520, 260, {255, 255, 196}},
                             {560, 380, {208, 204, 184}}, {650, 150, {171, 169, 149}}});
@@ -88,19 +88,19 @@ TEST(ReportImages, SceneFileOrthographicAllLights) {
 TEST(ReportImages, SameBytesForAnyThreadCount) {
     const Scene s = report_scene();
     const Camera& cam = *s.find_camera("perspective");
-    const auto alone = render(s, cam, nullptr);
+    const auto alone = render_view(s, cam, nullptr);
     ThreadPool one(1), two(2), five(5);
-    EXPECT_EQ(render(s, cam, &one).image.rgb, alone.image.rgb);
-    EXPECT_EQ(render(s, cam, &two).image.rgb, alone.image.rgb);
-    EXPECT_EQ(render(s, cam, &five).image.rgb, alone.image.rgb);
-    EXPECT_EQ(render(s, cam, &two).counts.total(), alone.counts.total());
+    EXPECT_EQ(render_view(s, cam, &one).image.rgb, alone.image.rgb);
+    EXPECT_EQ(render_view(s, cam, &two).image.rgb, alone.image.rgb);
+    EXPECT_EQ(render_view(s, cam, &five).image.rgb, alone.image.rgb);
+    EXPECT_EQ(render_view(s, cam, &two).counts.total(), alone.counts.total());
 }
 
 TEST(ReportImages, FloatAgreesWithDoubleOnMostPixels) {
     Scene s = report_scene();
     const Camera& cam = *s.find_camera("perspective");
-    const auto d = render(s, cam, nullptr);
-    const auto f = render(s, cam, nullptr, Precision::float32);
+    const auto d = render_view(s, cam, nullptr);
+    const auto f = render_view(s, cam, nullptr, Precision::float32);
     size_t off = 0;
     for (size_t i = 0; i < d.image.rgb.size(); ++i) off += std::abs(d.image.rgb[i] - f.image.rgb[i]) > 2;
     // Float moves a few silhouette and shadow-edge pixels; stated bound: 0.1%.

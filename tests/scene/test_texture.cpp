@@ -75,7 +75,7 @@ void expect_exact(const Rgba& got, const Rgba& want, const std::string& where) {
         EXPECT_EQ(got[k], want[k]) << where << ": channel " << k << " of " << show(got) << ", wanted " << show(want);
 }
 
-void expect_near(const Rgba& got, const Rgba& want, const std::string& where, double tol = 1e-6) {
+void expect_rgba_near(const Rgba& got, const Rgba& want, const std::string& where, double tol = 1e-6) {
     for (size_t k = 0; k < 4; ++k)
         EXPECT_NEAR(got[k], want[k], tol) << where << ": channel " << k << " of " << show(got) << ", wanted "
                                           << show(want);
@@ -237,16 +237,16 @@ TEST(TextureBilinear, EdgesBetweenTexelsAverageTheTwoInLinearColour) {
     // 0.2514), not to sRGB's byte 222.
     for (const Wrap w : {Wrap::repeat, Wrap::mirrored_repeat, Wrap::clamp_to_edge}) {
         const Texture t = row(w, Filter::bilinear);
-        expect_near(t.sample(0.25, 0.5), mix(linear(kRed), linear(kGreen), 0.5), name(w));
-        expect_near(t.sample(0.5, 0.5), mix(linear(kGreen), linear(kBlue), 0.5), name(w));
-        expect_near(t.sample(0.75, 0.5), mix(linear(kBlue), linear(kGrey), 0.5), name(w));
+        expect_rgba_near(t.sample(0.25, 0.5), mix(linear(kRed), linear(kGreen), 0.5), name(w));
+        expect_rgba_near(t.sample(0.5, 0.5), mix(linear(kGreen), linear(kBlue), 0.5), name(w));
+        expect_rgba_near(t.sample(0.75, 0.5), mix(linear(kBlue), linear(kGrey), 0.5), name(w));
         // A quarter of the way from texel 1's centre to texel 2's: x = 4u - 1/2 = 1.25.
-        expect_near(t.sample(0.4375, 0.5), mix(linear(kGreen), linear(kBlue), 0.25), name(w));
+        expect_rgba_near(t.sample(0.4375, 0.5), mix(linear(kGreen), linear(kBlue), 0.25), name(w));
         // 2 x 2: its middle is the mean of all four; (1/4, 1/2) of the left column.
         const Texture s = square(w, w, Filter::bilinear);
         const Rgba mean = mix(mix(linear(kRed), linear(kGreen), 0.5), mix(linear(kBlue), linear(kGrey), 0.5), 0.5);
-        expect_near(s.sample(0.5, 0.5), mean, name(w));
-        expect_near(s.sample(0.25, 0.5), mix(linear(kRed), linear(kBlue), 0.5), name(w));
+        expect_rgba_near(s.sample(0.5, 0.5), mean, name(w));
+        expect_rgba_near(s.sample(0.25, 0.5), mix(linear(kRed), linear(kBlue), 0.5), name(w));
     }
     const Rgba red_grey = row(Wrap::repeat, Filter::bilinear).sample(1.0, 0.5);  // texels 3 and 4 = 0
     EXPECT_NEAR(red_grey[0], (1 + 0.5028864580) / 2, 1e-7);
@@ -280,15 +280,15 @@ TEST(TextureBilinear, TheImagesOwnEdgesAndOutsideEachWrapMode) {
                   cla = row(Wrap::clamp_to_edge, Filter::bilinear);
     for (const Case& c : cases) {
         const std::string at = "u = " + std::to_string(c.u);
-        expect_near(rep.sample(c.u, 0.5), c.repeat, "repeat " + at);
-        expect_near(mir.sample(c.u, 0.5), c.mirrored, "mirrored " + at);
-        expect_near(cla.sample(c.u, 0.5), c.clamped, "clamp " + at);
+        expect_rgba_near(rep.sample(c.u, 0.5), c.repeat, "repeat " + at);
+        expect_rgba_near(mir.sample(c.u, 0.5), c.mirrored, "mirrored " + at);
+        expect_rgba_near(cla.sample(c.u, 0.5), c.clamped, "clamp " + at);
     }
     // Along v of the 2 x 2, at u = 1/4 (column 0 exactly): v = 0 is y = -0.5,
     // rows -1 and 0 at 1/2 -> repeat blue|red, clamp and mirrored red.
-    expect_near(square(Wrap::repeat, Wrap::repeat, Filter::bilinear).sample(0.25, 0.0), mix(blue, red, 0.5), "v = 0 repeat");
-    expect_near(square(Wrap::repeat, Wrap::clamp_to_edge, Filter::bilinear).sample(0.25, 0.0), red, "v = 0 clamp");
-    expect_near(square(Wrap::repeat, Wrap::mirrored_repeat, Filter::bilinear).sample(0.25, 0.0), red, "v = 0 mirrored");
+    expect_rgba_near(square(Wrap::repeat, Wrap::repeat, Filter::bilinear).sample(0.25, 0.0), mix(blue, red, 0.5), "v = 0 repeat");
+    expect_rgba_near(square(Wrap::repeat, Wrap::clamp_to_edge, Filter::bilinear).sample(0.25, 0.0), red, "v = 0 clamp");
+    expect_rgba_near(square(Wrap::repeat, Wrap::mirrored_repeat, Filter::bilinear).sample(0.25, 0.0), red, "v = 0 mirrored");
 }
 
 TEST(TextureBilinear, ReadsAreTheSameOneImageWidthOver) {
@@ -296,11 +296,11 @@ TEST(TextureBilinear, ReadsAreTheSameOneImageWidthOver) {
     const Texture rep = row(Wrap::repeat, Filter::bilinear), mir = row(Wrap::mirrored_repeat, Filter::bilinear);
     for (const double u : {0.0, 0.1, 0.3125, 0.5, 0.77, 0.99}) {
         for (const double k : {-3.0, -1.0, 1.0, 5.0}) {
-            expect_near(rep.sample(u + k, 0.5), rep.sample(u, 0.5), "repeat u = " + std::to_string(u), 1e-6);
-            expect_near(mir.sample(u + 2 * k, 0.5), mir.sample(u, 0.5), "mirrored u = " + std::to_string(u), 1e-6);
+            expect_rgba_near(rep.sample(u + k, 0.5), rep.sample(u, 0.5), "repeat u = " + std::to_string(u), 1e-6);
+            expect_rgba_near(mir.sample(u + 2 * k, 0.5), mir.sample(u, 0.5), "mirrored u = " + std::to_string(u), 1e-6);
         }
         // mirrored: u and -u read the same (the copy left of 0 is flipped).
-        expect_near(mir.sample(-u, 0.5), mir.sample(u, 0.5), "mirrored -u, u = " + std::to_string(u), 1e-6);
+        expect_rgba_near(mir.sample(-u, 0.5), mir.sample(u, 0.5), "mirrored -u, u = " + std::to_string(u), 1e-6);
     }
 }
 

@@ -17,14 +17,14 @@ Camera cam(const std::string& name, Projection p) {
     return c;
 }
 
-Scene scene_with(std::vector<Camera> cams) {
+Scene scene_of_cameras(std::vector<Camera> cams) {
     Scene s;
     s.cameras = std::move(cams);
     return s;
 }
 
 TEST(ViewState, PSwitchesToTheNextCameraWithTheOtherProjection) {
-    const Scene s = scene_with({cam("p1", Projection::perspective), cam("p2", Projection::perspective),
+    const Scene s = scene_of_cameras({cam("p1", Projection::perspective), cam("p2", Projection::perspective),
                                 cam("o1", Projection::orthographic)});
     ViewState v("dir/scene.yaml", s, 0);
     EXPECT_EQ(v.camera().name, "p1");
@@ -35,18 +35,18 @@ TEST(ViewState, PSwitchesToTheNextCameraWithTheOtherProjection) {
 }
 
 TEST(ViewState, PWithOneProjectionCyclesAndWithOneCameraDoesNothing) {
-    const Scene two = scene_with({cam("a", Projection::perspective), cam("b", Projection::perspective)});
+    const Scene two = scene_of_cameras({cam("a", Projection::perspective), cam("b", Projection::perspective)});
     ViewState v("s.yaml", two, 1);
     EXPECT_TRUE(v.switch_camera());
     EXPECT_EQ(v.camera().name, "a");
-    const Scene one = scene_with({cam("only", Projection::orthographic)});
+    const Scene one = scene_of_cameras({cam("only", Projection::orthographic)});
     ViewState w("s.yaml", one, 0);
     EXPECT_FALSE(w.switch_camera());
     EXPECT_EQ(w.camera().name, "only");
 }
 
 TEST(ViewState, SceneFileHasOneFrameAndNamesItsSave) {
-    const Scene s = scene_with({cam("perspective", Projection::perspective)});
+    const Scene s = scene_of_cameras({cam("perspective", Projection::perspective)});
     ViewState v("animations/scene.yaml", s, 0);
     EXPECT_FALSE(v.is_movie());
     EXPECT_EQ(v.frame_count(), 1);

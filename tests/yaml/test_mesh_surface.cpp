@@ -17,7 +17,7 @@ namespace {
 using test::expect_vec_near;
 using test::write_temp_file;
 
-const std::string kHead =
+const std::string kMeshHead =
     "materials:\n"
     "  grey: {color: [200, 200, 200], ambient: 0.1, diffuse: 0.9, specular: 0, phong_exponent: 1}\n"
     "cameras:\n"
@@ -37,12 +37,11 @@ void write_mesh() {
     write_temp_file("meshes/tri.off", "OFF\n4 2 0\n1 0 0\n0 1 0\n0 0 1\n0 0 0\n3 0 1 2\n3 0 0 3\n");
 }
 
-
 TEST(MeshSurface, ScaledThenRotatedThenMovedByHand) {
     write_mesh();
     // (1,0,0): scale 2 -> (2,0,0); 90 degrees about z -> (0,2,0); +(1,2,3) -> (1,4,3).
     // (0,1,0): -> (0,2,0) -> (-2,0,0) -> (-1,2,3).  (0,0,1): -> (0,0,2) -> (0,0,2) -> (1,2,5).
-    const Scene s = load_scene(write_temp_file("mesh_scene.yaml", kHead +
+    const Scene s = load_scene(write_temp_file("mesh_scene.yaml", kMeshHead +
         "surfaces:\n"
         "  - {type: mesh, file: meshes/tri.off, material: grey,\n"
         "     transform: {scale: 2, rotate: {axis: [0, 0, 3], degrees: 90}, translate: [1, 2, 3]}}\n")).scene;
@@ -58,7 +57,7 @@ TEST(MeshSurface, ScaledThenRotatedThenMovedByHand) {
 
 TEST(MeshSurface, RadiansAndPerAxisScaleAndNoTransform) {
     write_mesh();
-    const Scene s = load_scene(write_temp_file("mesh_radians.yaml", kHead +
+    const Scene s = load_scene(write_temp_file("mesh_radians.yaml", kMeshHead +
         "surfaces:\n"
         "  - {type: mesh, file: meshes/tri.off, material: grey,\n"
         "     transform: {scale: [1, 2, 3], rotate: {axis: [1, 0, 0], radians: 3.141592653589793}}}\n"
@@ -75,19 +74,19 @@ TEST(MeshSurface, MistakesAreOneLineNamingTheirFile) {
     write_mesh();
     using test::scene_error;
     const std::string mesh = "  - {type: mesh, material: grey, ";
-    EXPECT_EQ(scene_error(kHead + "surfaces:\n" + mesh + "file: meshes/tri.off, smooth: maybe}\n"),
+    EXPECT_EQ(scene_error(kMeshHead + "surfaces:\n" + mesh + "file: meshes/tri.off, smooth: maybe}\n"),
               "FILE:7:64: error: expected true or false for 'smooth', got 'maybe'");
-    EXPECT_EQ(scene_error(kHead + "surfaces:\n" + mesh + "file: meshes/tri.off, transform: {rotate: {axis: [0, 0, 1]}}}\n"),
+    EXPECT_EQ(scene_error(kMeshHead + "surfaces:\n" + mesh + "file: meshes/tri.off, transform: {rotate: {axis: [0, 0, 1]}}}\n"),
               "FILE:7:76: error: 'rotate' needs an angle: 'degrees' or 'radians' (one of them)");
-    EXPECT_EQ(scene_error(kHead + "surfaces:\n" + mesh + "file: meshes/tri.off, transform: {scale: 0}}\n"),
+    EXPECT_EQ(scene_error(kMeshHead + "surfaces:\n" + mesh + "file: meshes/tri.off, transform: {scale: 0}}\n"),
               "FILE:7:75: error: 'scale' must not be 0 (a number, or one per axis; a negative one mirrors)");
-    EXPECT_EQ(scene_error(kHead + "surfaces:\n" + mesh + "file: meshes/tri.off, transform: {shear: 1}}\n"),
+    EXPECT_EQ(scene_error(kMeshHead + "surfaces:\n" + mesh + "file: meshes/tri.off, transform: {shear: 1}}\n"),
               "FILE:7:68: error: unknown key 'shear' in 'transform'");
-    EXPECT_EQ(scene_error(kHead + "surfaces:\n" + mesh + "name: a, file: meshes/tri.off}\n" +
+    EXPECT_EQ(scene_error(kMeshHead + "surfaces:\n" + mesh + "name: a, file: meshes/tri.off}\n" +
                           "  - {type: sphere, name: a, center: [0, 0, 0], radius: 1, material: grey}\n"),
               "FILE:8:26: error: a second surface named 'a'");
     // The mesh file's own errors name the mesh file, not the scene.
-    const std::string scene = write_temp_file("missing_mesh.yaml", kHead + "surfaces:\n" + mesh + "file: meshes/none.off}\n");
+    const std::string scene = write_temp_file("missing_mesh.yaml", kMeshHead + "surfaces:\n" + mesh + "file: meshes/none.off}\n");
     try {
         load_scene(scene);
         ADD_FAILURE() << "no error";
@@ -99,7 +98,7 @@ TEST(MeshSurface, MistakesAreOneLineNamingTheirFile) {
 
 TEST(MeshSurface, SmoothNormalsAreAreaWeightedByHand) {
     write_roof();
-    const Scene s = load_scene(write_temp_file("roof_smooth.yaml", kHead +
+    const Scene s = load_scene(write_temp_file("roof_smooth.yaml", kMeshHead +
         "surfaces:\n"
         "  - {type: mesh, file: meshes/roof.off, material: grey, smooth: true}\n"
         "  - {type: triangle, vertices: [[5, 5, 5], [6, 5, 5], [5, 6, 5]], material: grey}\n")).scene;
@@ -131,7 +130,7 @@ TEST(MeshSurface, SmoothNormalsAreAreaWeightedByHand) {
 
 TEST(MeshSurface, FileNormalsMoveByTheInverseTranspose) {
     write_temp_file("meshes/tri_vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1 0 1\nf 1//1 2//1 3//1\n");
-    const Scene s = load_scene(write_temp_file("tri_vn.yaml", kHead +
+    const Scene s = load_scene(write_temp_file("tri_vn.yaml", kMeshHead +
         "surfaces:\n"
         "  - {type: mesh, file: meshes/tri_vn.obj, material: grey, smooth: true, transform: {scale: [2, 1, 1]}}\n")).scene;
     ASSERT_EQ(s.vertex_normals.size(), 1u);
@@ -174,7 +173,7 @@ TEST(MeshSurface, VertexColoursMultiplyTheMaterialsColours) {
 
 TEST(MeshSurface, SmoothRoofRendersFiniteAndShadesDifferently) {
     write_roof();
-    const std::string head = kHead + "lights:\n  sun: {type: directional, color: [255, 255, 255], intensity: 0.01,"
+    const std::string head = kMeshHead + "lights:\n  sun: {type: directional, color: [255, 255, 255], intensity: 0.01,"
                                      " direction: [0.3, 0.2, -1]}\nsurfaces:\n";
     const auto flat = load_scene(write_temp_file("roof_flat.yaml", head +
         "  - {type: mesh, file: meshes/roof.off, material: grey, transform: {scale: 3}}\n"));
