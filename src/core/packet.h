@@ -96,6 +96,11 @@ FH_HOT_INLINE Lanes<T> dot(const Vec3<T>& a, const Vec3Lanes<T>& b) {
 }
 
 template <typename T>
+FH_HOT_INLINE Vec3Lanes<T> cross(const Vec3Lanes<T>& a, const Vec3Lanes<T>& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+template <typename T>
 FH_HOT_INLINE Vec3Lanes<T> normalize(const Vec3Lanes<T>& v) {
     return v * (T(1) / sqrt(dot(v, v)));
 }

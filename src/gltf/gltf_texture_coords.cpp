@@ -50,6 +50,8 @@ std::optional<TextureCoords> carried_coords(const tinygltf::Material& mat, const
         return texture_coords_of(mat.emissiveTexture.texCoord, mat.emissiveTexture.extensions, file, what);
     if (mat.occlusionTexture.index >= 0)
         return texture_coords_of(mat.occlusionTexture.texCoord, mat.occlusionTexture.extensions, file, what);
+    if (mat.normalTexture.index >= 0)
+        return texture_coords_of(mat.normalTexture.texCoord, mat.normalTexture.extensions, file, what);
     return std::nullopt;
 }
 

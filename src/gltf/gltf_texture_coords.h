@@ -28,8 +28,8 @@ TextureCoords texture_coords_of(int tex_coord, const tinygltf::ExtensionMap& ext
                                 const std::string& what);
 
 // The coordinates a material's primitives carry: those of its base colour
-// texture, else of its emissive texture, else of its occlusion texture;
-// nothing when it has none of them.
+// texture, else of its emissive texture, else of its occlusion texture,
+// else of its normal texture; nothing when it has none of them.
 std::optional<TextureCoords> carried_coords(const tinygltf::Material& mat, const std::string& file,
                                             const std::string& what);
 

@@ -6,6 +6,7 @@
 // lights or materials beyond a material's index (render/flat_scene.h).
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <type_traits>
 #include <vector>
@@ -214,6 +215,25 @@ struct FlatGeometry {
         const TriangleUvs<T>& c = uvs[size_t(triangle_source[size_t(ids.triangle_index(prim))])];
         u = c.u0 + b1 * (c.u1 - c.u0) + b2 * (c.u2 - c.u0);
         v = c.v0 + b1 * (c.v1 - c.v0) + b2 * (c.v2 - c.v0);
+    }
+
+    // Triangle `prim`'s direction of increasing u (dP/du up to a positive
+    // factor), and the sign w that turns n x dP/du into the image's up,
+    // -dP/dv (glTF's v runs down the image), n its face's normal: -1 where
+    // its coordinates are mirrored (uvs not empty). False where its
+    // coordinates do not span it (collinear in the image).
+    bool tangent_of(int prim, Vec3<T>& du, T& w) const {
+        const Triangle<T>& t = triangles[size_t(ids.triangle_index(prim))];
+        const TriangleUvs<T>& c = uvs[size_t(triangle_source[size_t(ids.triangle_index(prim))])];
+        const Vec3<T> e1 = t.v1 - t.v0, e2 = t.v2 - t.v0;
+        const T du1 = c.u1 - c.u0, dv1 = c.v1 - c.v0, du2 = c.u2 - c.u0, dv2 = c.v2 - c.v0;
+        // dP/du = (dv2 e1 - dv1 e2) / det, dP/dv = (du1 e2 - du2 e1) / det.
+        const T det = du1 * dv2 - du2 * dv1;
+        if (!(det != 0) || !std::isfinite(det)) return false;
+        du = (det > 0 ? T(1) : T(-1)) * (dv2 * e1 - dv1 * e2);
+        const Vec3<T> dv = du1 * e2 - du2 * e1;  // dP/dv times det: the sign below is det^2's
+        w = glm::dot(glm::cross(glm::cross(e1, e2), dv2 * e1 - dv1 * e2), dv) > 0 ? T(-1) : T(1);
+        return glm::dot(du, du) > 0;
     }
 
     // The vertex colour of triangle `prim` at weights b1, b2 (colors not empty).

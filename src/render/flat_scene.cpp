@@ -55,10 +55,12 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
     }
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const Material<double>& mat = scene.materials[m];
-        // (An emissive texture shows lit or not.)
+        // (An emissive texture shows lit or not; a turned normal only in
+        // the lights' terms and the mirrored ray.)
+        const bool bumpy = mat.normal_texture >= 0 && (fx.diffuse || fx.specular || (mat.glazed && plan.max_depth > 0));
         const bool textured =
             ((mat.texture >= 0 || mat.occlusion_texture >= 0 || coloured[m]) && (fx.ambient || fx.diffuse)) ||
-            mat.emissive_texture >= 0;
+            mat.emissive_texture >= 0 || bumpy;
         const dvec3 term = ambient[m];
         // (Added only when there is some: bytes as before for the report's.)
         if (mat.emissive != dvec3(0)) ambient[m] += mat.emissive;
@@ -67,7 +69,7 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
                              whole >= 0, textured ? mat.texture : -1, textured ? Color<T>(term) : Color<T>(0),
                              textured ? Color<T>(mat.emissive) : Color<T>(0),
                              textured ? mat.emissive_texture : -1, textured ? mat.occlusion_texture : -1,
-                             T(mat.occlusion_strength)});
+                             T(mat.occlusion_strength), bumpy ? mat.normal_texture : -1, T(mat.normal_scale)});
         f.textured |= textured;
         f.fractional_exponents |= whole < 0 && fx.specular;
         if (whole > 0) f.exponent_bits = std::max(f.exponent_bits, int(std::bit_width(unsigned(whole))));

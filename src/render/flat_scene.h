@@ -37,6 +37,10 @@ struct MaterialShading {
     int emissive_texture = -1;
     int occlusion_texture = -1;
     T occlusion_strength = 1;
+    // Its normal texture turns the shading normal (render/normal_map.h;
+    // -1: none, or no light or mirror would show it).
+    int normal_texture = -1;
+    T normal_scale = 1;
 };
 
 // intensity * strength * (light colour (.) material colour), for one light and

@@ -22,7 +22,8 @@
 //
 // A textured material (glTF's base colour texture: only instances have one)
 // multiplies its ambient and diffuse colours by the texel colour at each
-// hit (SurfaceLanes::albedo); scenes without textures never read it.
+// hit (SurfaceLanes::albedo), and its normal texture turns the shading
+// normal (render/normal_map.h); scenes without textures never read them.
 //
 // F (ShaderFeature bits) fixes at compile time whether shadow rays, the
 // specular term and glazing exist at all; with_shader picks the variant the
@@ -42,6 +43,7 @@
 #include "render/background.h"
 #include "render/flat_scene.h"
 #include "render/instance_walk.h"
+#include "render/normal_map.h"
 #include "render/stats.h"
 
 namespace fh {
@@ -281,10 +283,16 @@ private:
             const FlatGeometry<T>& mesh = *instances_->meshes[size_t(inst.mesh)];
             mesh.project(prim, inst.to_object.point(p), point, normal, shading);
             const bool smooth = mesh.surfaces[size_t(prim)].smooth >= 0;
+            // A normal texture turns the shading normal in the mesh's space.
+            const MaterialShading<T>& m = scene_.shading[size_t(inst.material)];
+            const bool bumpy = scene_.textured && m.normal_texture >= 0 && !mesh.uvs.empty();
+            if (bumpy)
+                shading = normal_mapped(mesh, prim, point, shading, scene_.textures[size_t(m.normal_texture)],
+                                        m.normal_scale);
             const Vec3Lanes<T> object_point = point;
             point = inst.to_world.point(point);
             normal = normalize(inst.normal_to_world.vector(normal));
-            shading = smooth ? normalize(inst.normal_to_world.vector(shading)) : normal;
+            shading = smooth || bumpy ? normalize(inst.normal_to_world.vector(shading)) : normal;
             put_hit(point, normal, shading, inst.material, lanes, first, s, geometric, ambient);
             if (scene_.textured) textured(mesh, prim, object_point, inst.material, lanes, first, s, ambient);
             if (scene_.blended) {

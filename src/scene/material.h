@@ -31,6 +31,11 @@ struct Material {
     // is multiplied by 1 + occlusion_strength (R - 1) per hit.
     int occlusion_texture = -1;
     T occlusion_strength = 1;
+    // Its normal texture (read linear): the shading normal is turned per
+    // hit to the texel's direction in the triangle's tangent frame, its
+    // tangential part times normal_scale (render/normal_map.h).
+    int normal_texture = -1;
+    T normal_scale = 1;
     // glTF's alphaMode MASK: the surface is there only where its alpha --
     // `alpha` times the texture's -- is at least alpha_cutoff; elsewhere
     // camera and shadow rays pass through it.

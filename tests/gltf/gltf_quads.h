@@ -89,7 +89,8 @@ inline std::string png_header(std::uint32_t w, std::uint32_t h, int color) {
 // A quad facing up in the world (z up), x in [x0, x1], y in [y0, y1], at
 // height z; its TEXCOORD_0 has (0, 0) at (x0, y1) -- the image's top left
 // seen from above -- u along +x and v along -y. Written y-up for the file:
-// the world's (x, y, z) is glTF's (x, z, -y).
+// the world's (x, y, z) is glTF's (x, z, -y). Its triangles wind
+// counter-clockwise seen from above, unless `down`.
 struct Quad {
     double x0, x1, y0, y1, z;
     int material = -1;
@@ -97,6 +98,7 @@ struct Quad {
     bool uvs = true;                 // TEXCOORD_0
     std::vector<float> uv1;          // TEXCOORD_1 (8 numbers), or none
     bool degenerate_first = false;   // a zero-area triangle before its two
+    bool down = false;               // wound facing down: seen from above, its back
     int layers = 1;                  // copies of it in the same primitive, each layer_step higher
     double layer_step = 0.01;
     // COLOR_0, component by component for its 4 vertices a layer, or none:
@@ -125,7 +127,8 @@ inline std::string quads_body(Bin& bin, const std::vector<Quad>& quads, const st
             for (const auto& v : {at(q.x0, q.y1), at(q.x1, q.y1), at(q.x1, q.y0), at(q.x0, q.y0)})
                 p.insert(p.end(), v.begin(), v.end());
             uv.insert(uv.end(), {0, 0, 1, 0, 1, 1, 0, 1});
-            for (const int i : {0, 1, 2, 0, 2, 3}) index.push_back(4 * layer + i);
+            for (const int i : q.down ? std::vector<int>{0, 1, 2, 0, 2, 3} : std::vector<int>{0, 2, 1, 0, 3, 2})
+                index.push_back(4 * layer + i);
         }
         const size_t n = p.size() / 3;
         std::string attributes = "\"POSITION\": " + std::to_string(a);
