@@ -29,12 +29,13 @@ std::vector<MorphTarget> read_morph_targets(const tinygltf::Primitive& prim, con
         const std::string named = what + " morph target " + std::to_string(t);
         MorphTarget target;
         for (const auto& [attribute, accessor] : prim.targets[t]) {
-            if (attribute != "POSITION" && attribute != "NORMAL") continue;  // TANGENT: not used
+            if (attribute != "POSITION" && attribute != "NORMAL" && attribute != "TANGENT") continue;
             std::vector<dvec3> v = vectors(read.numbers(accessor, 3, named + " " + attribute));
             if (v.size() != vertices)
                 read.fail(named + ": " + attribute + " has " + std::to_string(v.size()) + " elements, POSITION " +
                           std::to_string(vertices));
-            (attribute == "POSITION" ? target.positions : target.normals) = std::move(v);
+            (attribute == "POSITION" ? target.positions : attribute == "NORMAL" ? target.normals : target.tangents) =
+                std::move(v);
         }
         if (target.positions.empty()) target.positions.assign(vertices, dvec3(0));
         targets.push_back(std::move(target));

@@ -108,6 +108,23 @@ public:
         if (!translucent) mesh.alphas.clear();
     }
 
+    // The primitive's TANGENT, where its material has a normal texture to
+    // read it by and its mesh has NORMALs (without them the specification
+    // has tangents ignored): xyz as they are, w as its sign.
+    void read_tangents(const tinygltf::Primitive& prim, const std::string& what, Mesh& mesh) const {
+        const auto tangent = prim.attributes.find("TANGENT");
+        if (tangent == prim.attributes.end() || mesh.normals.empty() || prim.material < 0 ||
+            size_t(prim.material) >= m_.materials.size() || m_.materials[size_t(prim.material)].normalTexture.index < 0)
+            return;
+        const std::vector<double> t = read_.numbers(tangent->second, 4, what + " TANGENT");
+        if (t.size() != 4 * mesh.positions.size())
+            fail(what + ": TANGENT has " + std::to_string(t.size() / 4) + " elements, POSITION " +
+                 std::to_string(mesh.positions.size()));
+        mesh.tangents.resize(mesh.positions.size());
+        for (size_t i = 0; i < mesh.tangents.size(); ++i)
+            mesh.tangents[i] = {t[4 * i], t[4 * i + 1], t[4 * i + 2], t[4 * i + 3] < 0 ? -1.0 : 1.0};
+    }
+
     Mesh read_primitive(const tinygltf::Primitive& prim, const std::string& what) const {
         const auto position = prim.attributes.find("POSITION");
         if (position == prim.attributes.end()) fail(what + ": no POSITION attribute");
@@ -164,6 +181,7 @@ Mesh read_gltf_primitive(const tinygltf::Model& model, const AccessorReader& rea
     const PrimitiveReader reader(model, read);
     Mesh mesh = reader.read_primitive(prim, what);
     mesh.uvs = reader.read_uvs(prim, what);
+    reader.read_tangents(prim, what, mesh);
     reader.read_colors(prim, what, mesh);
     return mesh;
 }

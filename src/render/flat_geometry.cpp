@@ -75,6 +75,9 @@ void flatten(const Scene& scene, FlatGeometry<T>& g) {
     g.uvs.clear();
     for (const auto& c : scene.triangle_uvs)
         g.uvs.push_back({T(c[0].x), T(c[0].y), T(c[1].x), T(c[1].y), T(c[2].x), T(c[2].y)});
+    g.tangents.clear();
+    for (const auto& t : scene.triangle_tangents)
+        g.tangents.push_back({Vec3<T>(t[0]), Vec3<T>(t[1]), Vec3<T>(t[2]), t[0].w + t[1].w + t[2].w < 0 ? T(-1) : T(1)});
     g.colors.clear();
     for (const auto& c : scene.triangle_colors) g.colors.push_back({Color<T>(c[0]), Color<T>(c[1]), Color<T>(c[2])});
     g.alphas.clear();

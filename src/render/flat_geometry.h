@@ -99,6 +99,14 @@ struct TriangleUvs {
     T u0, v0, u1, v1, u2, v2;
 };
 
+// A triangle's tangents at v0, v1 and v2 (a glTF TANGENT's xyz), and the
+// bitangent's sign w (theirs: the three's, as a mesh's vertices share it).
+template <typename T>
+struct TriangleTangents {
+    Vec3<T> t0, t1, t2;
+    T w;
+};
+
 // A triangle's vertex colours (each channel in [0, 1]) at v0, v1 and v2.
 template <typename T>
 struct TriangleColors {
@@ -161,6 +169,9 @@ struct FlatGeometry {
     // An instance's textured mesh: each triangle's texture coordinates, by
     // its index in the Scene (triangle_source's values); else empty.
     BigArray<TriangleUvs<T>> uvs;
+    // An instance's mesh with tangents (a glTF TANGENT's): each triangle's,
+    // the same way; else empty.
+    BigArray<TriangleTangents<T>> tangents;
     // An instance's mesh with vertex colours: each triangle's, the same way.
     BigArray<TriangleColors<T>> colors;
     // An instance's mesh with vertex alphas (a glTF COLOR_0's): the same.
@@ -234,6 +245,11 @@ struct FlatGeometry {
         const Vec3<T> dv = du1 * e2 - du2 * e1;  // dP/dv times det: the sign below is det^2's
         w = glm::dot(glm::cross(glm::cross(e1, e2), dv2 * e1 - dv1 * e2), dv) > 0 ? T(-1) : T(1);
         return glm::dot(du, du) > 0;
+    }
+
+    // The tangents of triangle `prim` (tangents not empty).
+    const TriangleTangents<T>& tangents_of(int prim) const {
+        return tangents[size_t(triangle_source[size_t(ids.triangle_index(prim))])];
     }
 
     // The vertex colour of triangle `prim` at weights b1, b2 (colors not empty).

@@ -7,7 +7,7 @@ namespace fh {
 namespace {
 
 // A mesh's triangles in its own space, as a scene of their own, with their
-// texture coordinates and vertex colours.
+// texture coordinates, tangents and vertex colours.
 Scene mesh_scene(const Mesh& mesh) {
     Scene s;
     PlacedMesh placed = place(mesh, glm::dmat4(1.0));
@@ -16,6 +16,11 @@ Scene mesh_scene(const Mesh& mesh) {
     if (!mesh.uvs.empty()) {
         s.triangle_uvs.reserve(mesh.triangles.size());
         for (const auto& t : mesh.triangles) s.triangle_uvs.push_back({mesh.uvs[t[0]], mesh.uvs[t[1]], mesh.uvs[t[2]]});
+    }
+    if (!mesh.tangents.empty()) {
+        s.triangle_tangents.reserve(mesh.triangles.size());
+        for (const auto& t : mesh.triangles)
+            s.triangle_tangents.push_back({mesh.tangents[t[0]], mesh.tangents[t[1]], mesh.tangents[t[2]]});
     }
     if (!mesh.colors.empty()) {
         s.triangle_colors.reserve(mesh.triangles.size());

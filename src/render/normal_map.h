@@ -3,10 +3,11 @@
 // n -- (x, y, z) = 2 texel - 1, x along increasing u, y towards the image's
 // up, z along n -- and the shading normal is turned to it:
 //   n' = normalize(s x t + s y b + z n)
-// with s the texture's scale, t the triangle's dP/du made perpendicular to
-// n and unit, b = w (n x t), w -1 where the triangle's coordinates are
-// mirrored. The tangent is the triangle's own (no TANGENT attribute is
-// read): what MikkTSpace gives on flat, evenly mapped faces.
+// with s the texture's scale, t the tangent made perpendicular to n and
+// unit, b = w (n x t). The tangent is the mesh's TANGENT, interpolated as
+// its normals are, w its sign; without one, the triangle's own dP/du, w -1
+// where its coordinates are mirrored -- what MikkTSpace gives on flat,
+// evenly mapped faces.
 #pragma once
 
 #include "core/packet.h"
@@ -21,23 +22,31 @@ namespace fh {
 template <typename T>
 FH_HOT_INLINE Vec3Lanes<T> normal_mapped(const FlatGeometry<T>& mesh, int prim, const Vec3Lanes<T>& point,
                                          const Vec3Lanes<T>& n, const Texture& texture, T scale) {
-    Vec3<T> du;
-    T w;
-    if (!mesh.tangent_of(prim, du, w)) return n;
     Lanes<T> b1, b2, u, v;
     mesh.weights_at(prim, point, b1, b2);
+    Vec3Lanes<T> along;  // the tangent before it is made perpendicular to n
+    T w;
+    if (!mesh.tangents.empty()) {
+        const TriangleTangents<T>& k = mesh.tangents_of(prim);
+        along = (T(1) - b1 - b2) * k.t0 + b1 * k.t1 + b2 * k.t2;
+        w = k.w;
+    } else {
+        Vec3<T> du;
+        if (!mesh.tangent_of(prim, du, w)) return n;
+        along = Vec3Lanes<T>::splat(du);
+    }
     mesh.uv_at(prim, b1, b2, u, v);
     const TexelLanes<T> c = texture.template sample<T>(u, v);  // a data texture: n / 255
     const Lanes<T> x = scale * (T(2) * c.r - T(1)), y = scale * (T(2) * c.g - T(1)), z = T(2) * c.b - T(1);
-    const Vec3Lanes<T> along = Vec3Lanes<T>::splat(du);
     const Vec3Lanes<T> tangent = along - dot(n, along) * n;
-    // t vanishes where n lies along dP/du (a smooth normal far off its face).
+    // t vanishes where n lies along the tangent (a normal far off its face,
+    // a TANGENT of zero).
     const Lanes<T> length2 = dot(tangent, tangent);
     const Vec3Lanes<T> t = tangent * (T(1) / sqrt(length2));
     const Vec3Lanes<T> b = w * cross(n, t);
     const Vec3Lanes<T> turned = x * t + y * b + z * n;
     const Lanes<T> turned2 = dot(turned, turned);
-    const LaneInts<T> good = (length2 > T(1e-6) * glm::dot(du, du)) & (turned2 > T(1e-12));
+    const LaneInts<T> good = (length2 > T(1e-6) * dot(along, along)) & (length2 > T(0)) & (turned2 > T(1e-12));
     return select(good, turned * (T(1) / sqrt(turned2)), n);
 }
 

@@ -29,6 +29,8 @@ Mesh deformed(const Deformation& d, const std::vector<double>& weights, const st
         for (size_t v = 0; v < m.positions.size(); ++v) m.positions[v] += w * target.positions[v];
         if (!target.normals.empty() && !m.normals.empty())
             for (size_t v = 0; v < m.normals.size(); ++v) m.normals[v] += w * target.normals[v];
+        if (!target.tangents.empty() && !m.tangents.empty())
+            for (size_t v = 0; v < m.tangents.size(); ++v) m.tangents[v] += glm::dvec4(w * target.tangents[v], 0.0);
     }
     if (d.skin.weights) {
         const SkinWeights& s = *d.skin.weights;
@@ -39,6 +41,8 @@ Mesh deformed(const Deformation& d, const std::vector<double>& weights, const st
                 if (const double w = s.weight[v * k + i]; w != 0) blend += w * joint_matrices[s.joint[v * k + i]];
             m.positions[v] = dvec3(blend * glm::dvec4(m.positions[v], 1.0));
             if (!m.normals.empty()) m.normals[v] = normal_matrix(blend) * m.normals[v];
+            // A tangent lies in the surface: it moves as its edges do.
+            if (!m.tangents.empty()) m.tangents[v] = glm::dvec4(glm::dmat3(blend) * dvec3(m.tangents[v]), m.tangents[v].w);
         }
     }
     return m;

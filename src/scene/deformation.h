@@ -27,6 +27,7 @@ struct Scene;
 struct MorphTarget {
     std::vector<dvec3> positions;  // one per vertex
     std::vector<dvec3> normals;    // one per vertex, or empty
+    std::vector<dvec3> tangents;   // one per vertex (added to a TANGENT's xyz), or empty
 };
 
 // Linear blend skinning's per-vertex part: each vertex moved by up to

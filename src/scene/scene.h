@@ -59,6 +59,8 @@ struct Scene {
     // Empty, or one per triangle: its vertices' texture coordinates (an
     // instance's mesh, render/instance_set.cpp).
     std::vector<std::array<dvec2, 3>> triangle_uvs;
+    // Empty, or one per triangle: its vertices' tangents (the same).
+    std::vector<std::array<glm::dvec4, 3>> triangle_tangents;
     // Empty, or one per triangle: its vertices' colours (the same).
     std::vector<std::array<dvec3, 3>> triangle_colors;
     // Empty, or one per triangle: its vertices' alphas (the same).

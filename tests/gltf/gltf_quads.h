@@ -97,6 +97,8 @@ struct Quad {
     double scale = 1;                // its node's scale (the positions are divided by it)
     bool uvs = true;                 // TEXCOORD_0
     std::vector<float> uv1;          // TEXCOORD_1 (8 numbers), or none
+    bool normals = false;            // NORMAL: up, at every vertex
+    std::vector<float> tangents;     // TANGENT (16 numbers, the file's axes), or none
     bool degenerate_first = false;   // a zero-area triangle before its two
     bool down = false;               // wound facing down: seen from above, its back
     int layers = 1;                  // copies of it in the same primitive, each layer_step higher
@@ -141,6 +143,16 @@ inline std::string quads_body(Bin& bin, const std::vector<Quad>& quads, const st
         if (!q.uv1.empty()) {
             accessors += ", " + accessor(bin.f32(q.uv1), kFloat, 4, "VEC2");
             attributes += ", \"TEXCOORD_1\": " + std::to_string(a++);
+        }
+        if (q.normals) {
+            std::vector<float> up;
+            for (size_t v = 0; v < n; ++v) up.insert(up.end(), {0, 1, 0});  // the file's +y: the world's +z
+            accessors += ", " + accessor(bin.f32(up), kFloat, n, "VEC3");
+            attributes += ", \"NORMAL\": " + std::to_string(a++);
+        }
+        if (!q.tangents.empty()) {
+            accessors += ", " + accessor(bin.f32(q.tangents), kFloat, 4, "VEC4");
+            attributes += ", \"TANGENT\": " + std::to_string(a++);
         }
         if (!q.colors.empty()) {
             std::vector<float> f;

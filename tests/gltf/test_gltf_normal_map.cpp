@@ -8,12 +8,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "gltf/gltf_quads.h"
 #include "render/effect_plan.h"
 #include "render/flat_scene.h"
+#include "scene/deformation.h"
 
 namespace fh {
 namespace {
@@ -91,6 +93,79 @@ TEST(GltfNormalTexture, MirroredCoordinatesTurnTheBitangentNotTheImage) {
             expect_columns(im, 0, 4, {l, l, l}, what + ", left");
             expect_columns(im, 4, 8, {r, r, r}, what + ", right");
         }
+}
+
+// The quad of the first test with NORMALs up and a TANGENT at each vertex.
+std::string tangent_quad(std::vector<float> tangent, bool normals = true) {
+    Quad q{-1, 1, -1, 1, 0, 0};
+    q.normals = normals;
+    for (int v = 0; v < 4; ++v) q.tangents.insert(q.tangents.end(), tangent.begin(), tangent.end());
+    return quads_file({q}, surfaces({bumpy_material()}, {{0, 0}}, {image_json(rgba_png(2, 1, kTwoTilts))},
+                                    {kNearestClampedSampler}));
+}
+
+TEST(GltfNormalTexture, AMeshsTangentsReplaceTheTrianglesOwn) {
+    // TANGENT (0, 0, -1) in the file's axes is the world's +y: t = +y and,
+    // w = 1, b = n x t = -x. The left texel (a, e, a) along (t, b, n) is
+    // (-e, a, a) in the world, the right one's (e, a, a) is (-a, e, a). With
+    // w = -1, b = +x: (e, a, a) and (a, e, a). Without NORMALs the file's
+    // tangents are ignored (as glTF requires): the triangles' own, as in the
+    // first test.
+    const double a = component(218), e = component(128);
+    struct Case {
+        std::vector<float> tangent;
+        bool normals;
+        dvec3 left, right;
+    };
+    const Case cases[] = {{{0, 0, -1, 1}, true, {-e, a, a}, {-a, e, a}},
+                          {{0, 0, -1, -1}, true, {e, a, a}, {a, e, a}},
+                          {{0, 0, -1, 1}, false, {a, e, a}, {e, a, a}}};
+    for (const Case& c : cases) {
+        const std::string json = tangent_quad(c.tangent, c.normals);
+        EXPECT_EQ(load(json).scene.meshes[0].mesh->tangents.size(), c.normals ? 4u : 0u);
+        for (const Precision p : kPrecisions)
+            for (const dvec3& sun : kSuns) {
+                const Image im = top_view(lit(json, {0.2, 0.6, sun}), p);
+                const std::string what = std::string(precision_name(p)) + ", w " + num(c.tangent[3]) +
+                                         (c.normals ? "" : ", no normals") + ", sun along " + along(sun);
+                const int l = lit_pixel(c.left, sun), r = lit_pixel(c.right, sun);
+                expect_columns(im, 0, 4, {l, l, l}, what + ", left");
+                expect_columns(im, 4, 8, {r, r, r}, what + ", right");
+            }
+    }
+    // A tangent along the normal has no direction in the surface: the
+    // normal stays (51 + 153 x cos 45 degrees from +x).
+    for (const Precision p : kPrecisions)
+        expect_columns(top_view(lit(tangent_quad({0, 1, 0, 1}), {0.2, 0.6, {-1, 0, -1}}), p), 0, 8, {159, 159, 159},
+                       precision_name(p));
+}
+
+TEST(GltfNormalTexture, TangentsMorphAndSkinWithTheirMesh) {
+    // deformed() on one vertex: the rest tangent (1, 0, 0), w -1; a target
+    // adding (-1, 1, 0) at weight 0.5 makes it (0.5, 0.5, 0); a joint turned
+    // 90 degrees about z and scaled 2 carries it to (-1, 1, 0) -- as an
+    // edge, not as a normal (whose matrix would halve it) -- and w stays.
+    auto rest = std::make_shared<Mesh>();
+    rest->positions = {{1, 0, 0}};
+    rest->normals = {{0, 0, 1}};
+    rest->tangents = {{1, 0, 0, -1}};
+    Deformation d;
+    d.rest = rest;
+    d.targets = std::make_shared<const std::vector<MorphTarget>>(
+        std::vector<MorphTarget>{{{{0, 0, 0}}, {}, {{-1, 1, 0}}}});
+    const Mesh morphed = deformed(d, {0.5}, {});
+    EXPECT_EQ(morphed.tangents[0], glm::dvec4(0.5, 0.5, 0, -1));
+    auto weights = std::make_shared<SkinWeights>();
+    weights->influences = 1;
+    weights->joint = {0};
+    weights->weight = {1};
+    d.skin.joints = {0};
+    d.skin.inverse_binds = {glm::dmat4(1.0)};
+    d.skin.weights = weights;
+    const glm::dmat4 turn{{0, 2, 0, 0}, {-2, 0, 0, 0}, {0, 0, 2, 0}, {0, 0, 0, 1}};  // columns
+    const Mesh skinned = deformed(d, {0.5}, {turn});
+    EXPECT_EQ(skinned.tangents[0], glm::dvec4(-1, 1, 0, -1));
+    EXPECT_EQ(skinned.normals[0], dvec3(0, 0, 0.5));
 }
 
 TEST(GltfNormalTexture, SeenFromBehindTheTurnedNormalTurnsWithTheFace) {
