@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # What textures and cutouts cost (make bench-textures): the glTF demo
-# (animations/gltf/demo.gltf: a floor of textured tiles, a trellis cut out
-# by alphaMode MASK) against the same file without them, 800x450, 2
-# threads, double and float, at frame 110 (the cart under the trellis):
+# (animations/gltf/demo.gltf: a floor of textured tiles bevelled by a
+# normal texture, a trellis cut out by alphaMode MASK) against the same
+# file without them, 800x450, 2 threads, double and float, at frame 110
+# (the cart under the trellis):
 #   textured    the demo as it is;
+#   no_bevels   its floor without the normal texture;
 #   no_cutout   its trellis OPAQUE (its texture still drawn, no holes);
 #   untextured  no textures at all (the trellis a solid square, the floor
-#               one grey), the same triangles, lights and effects.
+#               one flat grey), the same triangles, lights and effects.
 # The variants are timed in turns, ROUNDS rounds of `firsthit bench --runs
 # 3`, and each keeps its fastest round: the machine's noise falls on all.
 #   scripts/bench_textures.sh [OUT_DIR] [--rounds N]
@@ -29,15 +31,20 @@ python3 - "$demo" "$work" <<'PY'
 import json, sys
 demo, work = sys.argv[1], sys.argv[2]
 g = json.load(open(demo))
+flat = json.loads(json.dumps(g))
+for m in flat["materials"]:
+    m.pop("normalTexture", None)
+json.dump(flat, open(work + "/no_bevels.gltf", "w"))
 for m in g["materials"]:
     if m.get("alphaMode") == "MASK":
         m["alphaMode"] = "OPAQUE"
 json.dump(g, open(work + "/no_cutout.gltf", "w"))
 for m in g["materials"]:
     m["pbrMetallicRoughness"].pop("baseColorTexture", None)
+    m.pop("normalTexture", None)
 json.dump(g, open(work + "/untextured.gltf", "w"))
 PY
-variants="textured no_cutout untextured"
+variants="textured no_bevels no_cutout untextured"
 for precision in double float; do
   for v in $variants; do echo 1e9 > "$work/$v.$precision"; done
   for ((r = 0; r < rounds; r++)); do

@@ -6,7 +6,7 @@ that hops from post to post (STEP), a tentacle that sways (a skin of three
 joints), a blob that squashes (a morph target, its weight animated), a
 camera on a node, a directional, a point and a spot light
 (KHR_lights_punctual), a floor of textured tiles (a PNG repeated,
-KHR_texture_transform) and a trellis whose bars are a cutout (alphaMode
+KHR_texture_transform; their rims bevelled by a normal texture) and a trellis whose bars are a cutout (alphaMode
 MASK): the floor shows through its holes, and the sun throws the grid's
 shadow; a pane of blue glass (alphaMode BLEND) before the blob, which
 dims the light through it. One .gltf file, its buffer and images in data:
@@ -140,6 +140,19 @@ def tile(x, y):
     return (200, 196, 186, 255) if (x // 16 + y // 16) % 2 == 0 else (150, 160, 175, 255)
 
 
+def tile_bumps(x, y):
+    """The tiles' normal texture: each tile's rim, 3 texels wide, slopes down
+    to the grout around it (a normal turned 45 degrees out of the tile: +x
+    along u, +y up the image); the grout and the tile's top are flat."""
+    def slope(i):  # -1 on a tile's first texels, +1 on its last, 0 between and on the grout
+        k = i % 16
+        return -1 if 1 <= k <= 3 else 1 if k >= 13 else 0
+    sx, sy = slope(x), -slope(y)  # rows run down the image; +y is up
+    n = (sx, sy, 1.0)
+    length = math.sqrt(n[0] ** 2 + n[1] ** 2 + n[2] ** 2)
+    return tuple(round((c / length * 0.5 + 0.5) * 255) for c in n) + (255,)
+
+
 def trellis(x, y):
     """A trellis: wooden bars 4 texels wide every 16, see-through between (alpha 0)."""
     if x % 16 < 4 or y % 16 < 4:
@@ -213,9 +226,13 @@ def main(out):
     materials[0]["pbrMetallicRoughness"]["baseColorFactor"] = [1, 1, 1, 1]
     materials[0]["pbrMetallicRoughness"]["baseColorTexture"] = {
         "index": 0, "extensions": {"KHR_texture_transform": {"scale": [0.25, 0.25]}}}
+    # Their rims bevelled by a normal texture on the same coordinates.
+    materials[0]["normalTexture"] = {
+        "index": 2, "extensions": {"KHR_texture_transform": {"scale": [0.25, 0.25]}}}
     images = [{"uri": "data:image/png;base64," + base64.b64encode(png(64, 64, tile)).decode()},
-              {"uri": "data:image/png;base64," + base64.b64encode(png(64, 64, trellis)).decode()}]
-    textures = [{"sampler": 0, "source": 0}, {"sampler": 1, "source": 1}]
+              {"uri": "data:image/png;base64," + base64.b64encode(png(64, 64, trellis)).decode()},
+              {"uri": "data:image/png;base64," + base64.b64encode(png(64, 64, tile_bumps)).decode()}]
+    textures = [{"sampler": 0, "source": 0}, {"sampler": 1, "source": 1}, {"sampler": 0, "source": 2}]
     samplers = [{"magFilter": 9729, "wrapS": 10497, "wrapT": 10497},
                 {"magFilter": 9728, "wrapS": 33071, "wrapT": 33071}]
     floor = box(14, 0.2, 8)

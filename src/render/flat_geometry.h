@@ -99,6 +99,14 @@ struct TriangleUvs {
     T u0, v0, u1, v1, u2, v2;
 };
 
+// Where points lie on a triangle, for what its vertices carry: the
+// weights b1, b2 of v1 and v2 and, where its mesh has texture coordinates,
+// (u, v) there (FlatGeometry::point_on).
+template <typename T>
+struct TrianglePoint {
+    Lanes<T> b1, b2, u, v;
+};
+
 // A triangle's tangents at v0, v1 and v2 (a glTF TANGENT's xyz), and the
 // bitangent's sign w (theirs: the three's, as a mesh's vertices share it).
 template <typename T>
@@ -219,6 +227,15 @@ struct FlatGeometry {
         const Vec3<T> e1 = t.v1 - t.v0, e2 = t.v2 - t.v0;
         const T d00 = glm::dot(e1, e1), d01 = glm::dot(e1, e2), d11 = glm::dot(e2, e2);
         clamped_weights(p - Vec3Lanes<T>::splat(t.v0), e1, e2, d00, d01, d11, T(1) / (d00 * d11 - d01 * d01), b1, b2);
+    }
+
+    // Points p of triangle `prim`: their weights, and their coordinates
+    // where the mesh has some (else u, v are 0).
+    FH_HOT_INLINE TrianglePoint<T> point_on(int prim, const Vec3Lanes<T>& p) const {
+        TrianglePoint<T> at{};
+        weights_at(prim, p, at.b1, at.b2);
+        if (!uvs.empty()) uv_at(prim, at.b1, at.b2, at.u, at.v);
+        return at;
     }
 
     // Texture coordinates (u, v) of triangle `prim` at weights b1, b2 (uvs not empty).

@@ -16,27 +16,24 @@
 
 namespace fh {
 
-// The turned normal at points `point` of triangle `prim` of `mesh` (its
-// space; uvs not empty), n the shading normal there (unit, outward). Lanes
-// where the frame or the texel's direction vanish keep n: never NaN.
+// The turned normal at points `at` of triangle `prim` of `mesh` (uvs not
+// empty), n the shading normal there (unit, outward, in the mesh's space).
+// Lanes where the frame or the texel's direction vanish keep n: never NaN.
 template <typename T>
-FH_HOT_INLINE Vec3Lanes<T> normal_mapped(const FlatGeometry<T>& mesh, int prim, const Vec3Lanes<T>& point,
+FH_HOT_INLINE Vec3Lanes<T> normal_mapped(const FlatGeometry<T>& mesh, int prim, const TrianglePoint<T>& at,
                                          const Vec3Lanes<T>& n, const Texture& texture, T scale) {
-    Lanes<T> b1, b2, u, v;
-    mesh.weights_at(prim, point, b1, b2);
     Vec3Lanes<T> along;  // the tangent before it is made perpendicular to n
     T w;
     if (!mesh.tangents.empty()) {
         const TriangleTangents<T>& k = mesh.tangents_of(prim);
-        along = (T(1) - b1 - b2) * k.t0 + b1 * k.t1 + b2 * k.t2;
+        along = (T(1) - at.b1 - at.b2) * k.t0 + at.b1 * k.t1 + at.b2 * k.t2;
         w = k.w;
     } else {
         Vec3<T> du;
         if (!mesh.tangent_of(prim, du, w)) return n;
         along = Vec3Lanes<T>::splat(du);
     }
-    mesh.uv_at(prim, b1, b2, u, v);
-    const TexelLanes<T> c = texture.template sample<T>(u, v);  // a data texture: n / 255
+    const TexelLanes<T> c = texture.template sample<T>(at.u, at.v);  // a data texture: n / 255
     const Lanes<T> x = scale * (T(2) * c.r - T(1)), y = scale * (T(2) * c.g - T(1)), z = T(2) * c.b - T(1);
     const Vec3Lanes<T> tangent = along - dot(n, along) * n;
     // t vanishes where n lies along the tangent (a normal far off its face,

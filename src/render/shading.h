@@ -283,18 +283,22 @@ private:
             const FlatGeometry<T>& mesh = *instances_->meshes[size_t(inst.mesh)];
             mesh.project(prim, inst.to_object.point(p), point, normal, shading);
             const bool smooth = mesh.surfaces[size_t(prim)].smooth >= 0;
-            // A normal texture turns the shading normal in the mesh's space.
+            // Where the hits lie on the triangle, for its textures and
+            // vertex colours; a normal texture turns the shading normal in
+            // the mesh's space.
+            TrianglePoint<T> at{};
+            if (scene_.textured && (!mesh.uvs.empty() || !mesh.colors.empty())) at = mesh.point_on(prim, point);
             const MaterialShading<T>& m = scene_.shading[size_t(inst.material)];
             const bool bumpy = scene_.textured && m.normal_texture >= 0 && !mesh.uvs.empty();
             if (bumpy)
-                shading = normal_mapped(mesh, prim, point, shading, scene_.textures[size_t(m.normal_texture)],
+                shading = normal_mapped(mesh, prim, at, shading, scene_.textures[size_t(m.normal_texture)],
                                         m.normal_scale);
             const Vec3Lanes<T> object_point = point;
             point = inst.to_world.point(point);
             normal = normalize(inst.normal_to_world.vector(normal));
             shading = smooth || bumpy ? normalize(inst.normal_to_world.vector(shading)) : normal;
             put_hit(point, normal, shading, inst.material, lanes, first, s, geometric, ambient);
-            if (scene_.textured) textured(mesh, prim, object_point, inst.material, lanes, first, s, ambient);
+            if (scene_.textured) textured(mesh, prim, at, inst.material, lanes, first, s, ambient);
             if (scene_.blended) {
                 const Cutout* cut = inst.cutout >= 0 ? &instances_->cutouts[size_t(inst.cutout)] : nullptr;
                 put(s.opacity, cut && cut->blend ? alpha_at(mesh, *cut, prim, object_point) : splat(T(1)), lanes,
@@ -304,14 +308,14 @@ private:
         finish_surfaces(ray, hit, geometric, ambient, s, local);
     }
 
-    // A textured material's texel colours at an instance's points (in its
-    // mesh's space), times the mesh's vertex colours where it has them,
-    // into s.albedo, and its ambient term times them -- and times its
-    // occlusion, plus its emissive colour times the emissive texel -- into
-    // ambient; none of these: albedo 1. One sample of each texture per hit,
-    // no allocation.
+    // A textured material's texel colours at an instance's points (`at` on
+    // triangle `prim` of its mesh), times the mesh's vertex colours where it
+    // has them, into s.albedo, and its ambient term times them -- and times
+    // its occlusion, plus its emissive colour times the emissive texel --
+    // into ambient; none of these: albedo 1. One sample of each texture per
+    // hit, no allocation.
     template <typename First>
-    FH_HOT_INLINE void textured(const FlatGeometry<T>& mesh, int prim, const Vec3Lanes<T>& point, int material,
+    FH_HOT_INLINE void textured(const FlatGeometry<T>& mesh, int prim, const TrianglePoint<T>& at, int material,
                                 const LaneInts<T>& lanes, First first, SurfaceLanes& s, ColorLanes<T>& ambient) const {
         const MaterialShading<T>& m = scene_.shading[size_t(material)];
         const bool uvs = !mesh.uvs.empty();
@@ -323,27 +327,24 @@ private:
         }
         const Lanes<T> one = splat(T(1));
         ColorLanes<T> albedo{one, one, one};
-        Lanes<T> b1, b2, u{}, v{};  // u, v: read only where some texture is
-        mesh.weights_at(prim, point, b1, b2);
-        if (texel || glow || occluded) mesh.uv_at(prim, b1, b2, u, v);
         if (texel) {
-            const TexelLanes<T> c = scene_.textures[size_t(m.texture)].template sample<T>(u, v);
+            const TexelLanes<T> c = scene_.textures[size_t(m.texture)].template sample<T>(at.u, at.v);
             albedo = {c.r, c.g, c.b};
         }
         if (!mesh.colors.empty()) {
-            const ColorLanes<T> c = mesh.color_at(prim, b1, b2);
+            const ColorLanes<T> c = mesh.color_at(prim, at.b1, at.b2);
             albedo = {albedo.x * c.x, albedo.y * c.y, albedo.z * c.z};
         }
         put(s.albedo, albedo, lanes, first);
         ColorLanes<T> tinted{albedo.x * m.tinted_ambient.x, albedo.y * m.tinted_ambient.y,
                              albedo.z * m.tinted_ambient.z};
         if (occluded) {
-            const Lanes<T> r = scene_.textures[size_t(m.occlusion_texture)].template sample<T>(u, v).r;
+            const Lanes<T> r = scene_.textures[size_t(m.occlusion_texture)].template sample<T>(at.u, at.v).r;
             const Lanes<T> factor = T(1) + m.occlusion_strength * (r - T(1));
             tinted = {tinted.x * factor, tinted.y * factor, tinted.z * factor};
         }
         if (glow) {
-            const TexelLanes<T> c = scene_.textures[size_t(m.emissive_texture)].template sample<T>(u, v);
+            const TexelLanes<T> c = scene_.textures[size_t(m.emissive_texture)].template sample<T>(at.u, at.v);
             put(ambient, tinted + ColorLanes<T>{c.r * m.emissive.x, c.g * m.emissive.y, c.b * m.emissive.z}, lanes, first);
         } else {
             put(ambient, tinted + m.emissive, lanes, first);

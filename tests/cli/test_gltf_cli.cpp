@@ -317,11 +317,11 @@ TEST(GltfCli, ExportOfDebiansSkinByHand) {
         << info.out;
 }
 
-// The demo's floor tiles and trellis: two textures, one of them cutting the
+// The demo's floor tiles, their bevels and the trellis: three textures, one cutting the
 // trellis out; and its glass pane, see-through.
 TEST(GltfCli, InfoCountsTexturesCutoutsAndSeeThroughMaterials) {
     const auto info = run_firsthit("info " + source_path("animations/gltf/demo.gltf"));
-    EXPECT_NE(info.out.find("\ntextures: 2\ncutout_materials: 1\nsee_through_materials: 1\n"), std::string::npos)
+    EXPECT_NE(info.out.find("\ntextures: 3\ncutout_materials: 1\nsee_through_materials: 1\n"), std::string::npos)
         << info.out;
 }
 
