@@ -49,6 +49,20 @@ std::string along(const dvec3& d) { return "(" + num(d.x) + ", " + num(d.y) + ",
 // Suns from above and from four sides, 45 degrees up.
 const dvec3 kSuns[] = {{0, 0, -1}, {-1, 0, -1}, {1, 0, -1}, {0, -1, -1}, {0, 1, -1}};
 
+// The file's left and right halves, under each of kSuns, in both
+// precisions: what normals `left` and `right` (the world's) show.
+void expect_halves_under_suns(const std::string& json, const dvec3& left, const dvec3& right,
+                              const std::string& what = "") {
+    for (const Precision p : kPrecisions)
+        for (const dvec3& sun : kSuns) {
+            const Image im = top_view(lit(json, {0.2, 0.6, sun}), p);
+            const std::string named = what + precision_name(p) + ", sun along " + along(sun);
+            const int l = lit_pixel(left, sun), r = lit_pixel(right, sun);
+            expect_columns(im, 0, 4, {l, l, l}, named + ", left");
+            expect_columns(im, 4, 8, {r, r, r}, named + ", right");
+        }
+}
+
 TEST(GltfNormalTexture, ATexelTurnsTheNormalInTheTangentFrame) {
     const std::string json = quads_file({{-1, 1, -1, 1, 0, 0}},
                                         surfaces({bumpy_material()}, {{0, 0}}, {image_json(rgba_png(2, 1, kTwoTilts))},
@@ -65,14 +79,7 @@ TEST(GltfNormalTexture, ATexelTurnsTheNormalInTheTangentFrame) {
     EXPECT_EQ(lit_pixel(left, {-1, 0, -1}), 204);  // from +x: n.l = 0.999992
     EXPECT_EQ(lit_pixel(right, {-1, 0, -1}), 128); // 51 + 153 x 0.502759
     EXPECT_EQ(lit_pixel(left, {1, 0, -1}), 51);    // from -x: n.l = 0, unlit
-    for (const Precision p : kPrecisions)
-        for (const dvec3& sun : kSuns) {
-            const Image im = top_view(lit(json, {0.2, 0.6, sun}), p);
-            const std::string what = std::string(precision_name(p)) + ", sun along " + along(sun);
-            const int l = lit_pixel(left, sun), r = lit_pixel(right, sun);
-            expect_columns(im, 0, 4, {l, l, l}, what + ", left");
-            expect_columns(im, 4, 8, {r, r, r}, what + ", right");
-        }
+    expect_halves_under_suns(json, left, right);
 }
 
 TEST(GltfNormalTexture, MirroredCoordinatesTurnTheBitangentNotTheImage) {
@@ -85,14 +92,7 @@ TEST(GltfNormalTexture, MirroredCoordinatesTurnTheBitangentNotTheImage) {
                                                       {image_json(rgba_png(2, 1, kTwoTilts))}, {kNearestClampedSampler}));
     const double a = component(218), e = component(128);
     const dvec3 right{-a, e, a}, left{-e, a, a};
-    for (const Precision p : kPrecisions)
-        for (const dvec3& sun : kSuns) {
-            const Image im = top_view(lit(json, {0.2, 0.6, sun}), p);
-            const std::string what = std::string(precision_name(p)) + ", sun along " + along(sun);
-            const int l = lit_pixel(left, sun), r = lit_pixel(right, sun);
-            expect_columns(im, 0, 4, {l, l, l}, what + ", left");
-            expect_columns(im, 4, 8, {r, r, r}, what + ", right");
-        }
+    expect_halves_under_suns(json, left, right);
 }
 
 // The quad of the first test with NORMALs up and a TANGENT at each vertex.
@@ -123,15 +123,8 @@ TEST(GltfNormalTexture, AMeshsTangentsReplaceTheTrianglesOwn) {
     for (const Case& c : cases) {
         const std::string json = tangent_quad(c.tangent, c.normals);
         EXPECT_EQ(load(json).scene.meshes[0].mesh->tangents.size(), c.normals ? 4u : 0u);
-        for (const Precision p : kPrecisions)
-            for (const dvec3& sun : kSuns) {
-                const Image im = top_view(lit(json, {0.2, 0.6, sun}), p);
-                const std::string what = std::string(precision_name(p)) + ", w " + num(c.tangent[3]) +
-                                         (c.normals ? "" : ", no normals") + ", sun along " + along(sun);
-                const int l = lit_pixel(c.left, sun), r = lit_pixel(c.right, sun);
-                expect_columns(im, 0, 4, {l, l, l}, what + ", left");
-                expect_columns(im, 4, 8, {r, r, r}, what + ", right");
-            }
+        expect_halves_under_suns(json, c.left, c.right,
+                                 "w " + num(c.tangent[3]) + (c.normals ? "" : ", no normals") + ", ");
     }
     // A tangent along the normal has no direction in the surface: the
     // normal stays (51 + 153 x cos 45 degrees from +x).
@@ -179,14 +172,7 @@ TEST(GltfNormalTexture, SeenFromBehindTheTurnedNormalTurnsWithTheFace) {
     const double a = component(218), e = component(128);
     const dvec3 left{-a, -e, a}, right{-e, -a, a};
     EXPECT_EQ(lit_pixel(left, {1, 0, -1}), 204);
-    for (const Precision p : kPrecisions)
-        for (const dvec3& sun : kSuns) {
-            const Image im = top_view(lit(json, {0.2, 0.6, sun}), p);
-            const std::string what = std::string(precision_name(p)) + ", sun along " + along(sun);
-            const int l = lit_pixel(left, sun), r = lit_pixel(right, sun);
-            expect_columns(im, 0, 4, {l, l, l}, what + ", left");
-            expect_columns(im, 4, 8, {r, r, r}, what + ", right");
-        }
+    expect_halves_under_suns(json, left, right);
 }
 
 TEST(GltfNormalTexture, TheScaleShortensTheTangentialPart) {
