@@ -5,6 +5,7 @@
 
 #include "gltf/gltf_texture_coords.h"
 #include "meshes/mesh_loader.h"
+#include "scene/mesh_tangents.h"
 
 namespace fh {
 
@@ -110,12 +111,18 @@ public:
 
     // The primitive's TANGENT, where its material has a normal texture to
     // read it by and its mesh has NORMALs (without them the specification
-    // has tangents ignored): xyz as they are, w as its sign.
+    // has tangents ignored): xyz as they are, w as its sign. Without
+    // TANGENT, they are made from the normals and coordinates
+    // (scene/mesh_tangents.h).
     void read_tangents(const tinygltf::Primitive& prim, const std::string& what, Mesh& mesh) const {
-        const auto tangent = prim.attributes.find("TANGENT");
-        if (tangent == prim.attributes.end() || mesh.normals.empty() || prim.material < 0 ||
+        if (mesh.normals.empty() || mesh.uvs.empty() || prim.material < 0 ||
             size_t(prim.material) >= m_.materials.size() || m_.materials[size_t(prim.material)].normalTexture.index < 0)
             return;
+        const auto tangent = prim.attributes.find("TANGENT");
+        if (tangent == prim.attributes.end()) {
+            mesh.tangents = vertex_tangents(mesh);
+            return;
+        }
         const std::vector<double> t = read_.numbers(tangent->second, 4, what + " TANGENT");
         if (t.size() != 4 * mesh.positions.size())
             fail(what + ": TANGENT has " + std::to_string(t.size() / 4) + " elements, POSITION " +

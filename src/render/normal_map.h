@@ -4,10 +4,10 @@
 // up, z along n -- and the shading normal is turned to it:
 //   n' = normalize(s x t + s y b + z n)
 // with s the texture's scale, t the tangent made perpendicular to n and
-// unit, b = w (n x t). The tangent is the mesh's TANGENT, interpolated as
-// its normals are, w its sign; without one, the triangle's own dP/du, w -1
-// where its coordinates are mirrored -- what MikkTSpace gives on flat,
-// evenly mapped faces.
+// unit, b = w (n x t). The tangent is the mesh's (a glTF TANGENT, or made
+// from its normals: scene/mesh_tangents.h), interpolated as its normals
+// are, w its sign; a mesh without normals has none, and the triangle's
+// own dP/du serves, w -1 where its coordinates are mirrored.
 #pragma once
 
 #include "core/packet.h"

@@ -110,7 +110,8 @@ TEST(GltfNormalTexture, AMeshsTangentsReplaceTheTrianglesOwn) {
     // (-e, a, a) in the world, the right one's (e, a, a) is (-a, e, a). With
     // w = -1, b = +x: (e, a, a) and (a, e, a). Without NORMALs the file's
     // tangents are ignored (as glTF requires): the triangles' own, as in the
-    // first test.
+    // first test; with NORMALs and no TANGENT, the vertices' are made from
+    // the quad: the same.
     const double a = component(218), e = component(128);
     struct Case {
         std::vector<float> tangent;
@@ -119,12 +120,17 @@ TEST(GltfNormalTexture, AMeshsTangentsReplaceTheTrianglesOwn) {
     };
     const Case cases[] = {{{0, 0, -1, 1}, true, {-e, a, a}, {-a, e, a}},
                           {{0, 0, -1, -1}, true, {e, a, a}, {a, e, a}},
-                          {{0, 0, -1, 1}, false, {a, e, a}, {e, a, a}}};
+                          {{0, 0, -1, 1}, false, {a, e, a}, {e, a, a}},
+                          {{}, true, {a, e, a}, {e, a, a}}};  // no TANGENT: made from the quad, +x
     for (const Case& c : cases) {
         const std::string json = tangent_quad(c.tangent, c.normals);
-        EXPECT_EQ(load(json).scene.meshes[0].mesh->tangents.size(), c.normals ? 4u : 0u);
+        const GltfFile f = load(json);
+        const Mesh& mesh = *f.scene.meshes[0].mesh;
+        EXPECT_EQ(mesh.tangents.size(), c.normals ? 4u : 0u);
+        if (c.tangent.empty()) EXPECT_EQ(mesh.tangents[0], glm::dvec4(1, 0, 0, 1));
         expect_halves_under_suns(json, c.left, c.right,
-                                 "w " + num(c.tangent[3]) + (c.normals ? "" : ", no normals") + ", ");
+                                 (c.tangent.empty() ? "no TANGENT" : "w " + num(c.tangent[3])) +
+                                     (c.normals ? "" : ", no normals") + ", ");
     }
     // A tangent along the normal has no direction in the surface: the
     // normal stays (51 + 153 x cos 45 degrees from +x).
