@@ -53,8 +53,8 @@ public:
             warn(std::to_string(skipped_points_lines_) + " primitive(s) of points or lines skipped (triangles only)");
         if (materials.unused_textures > 0)
             warn(std::to_string(materials.unused_textures) +
-                 " texture(s) not drawn (metallic-roughness textures, and emissive, occlusion or normal "
-                 "textures on other coordinates than their mesh carries)");
+                 " texture(s) not drawn (emissive, occlusion, normal or metallic-roughness textures on other "
+                 "coordinates than their mesh carries)");
         out.warnings.insert(out.warnings.begin(), warnings_.begin(), warnings_.end());
         return out;
     }
@@ -276,7 +276,8 @@ std::vector<NodeAnimation> add_gltf(Scene& scene, GltfFile file, const std::stri
         scene.material_names.push_back(name + "/" + g.material_names[m]);
         scene.materials.push_back(g.materials[m]);
         for (int* t : {&scene.materials.back().texture, &scene.materials.back().emissive_texture,
-                       &scene.materials.back().occlusion_texture, &scene.materials.back().normal_texture})
+                       &scene.materials.back().occlusion_texture, &scene.materials.back().normal_texture,
+                       &scene.materials.back().metal_rough_texture})
             if (*t >= 0) *t += textures;
     }
     scene.textures.insert(scene.textures.end(), g.textures.begin(), g.textures.end());

@@ -38,6 +38,8 @@ Material<double> material_of(const tinygltf::Material& m) {
     out.phong_exponent = std::min(2 / (a * a) - 2, 10000.0);
     out.glazed = metal > 0.5 && rough < 0.5;
     out.reflectivity = out.glazed ? metal * (1 - rough) * (1 - rough) : 0;
+    out.metallic = metal;  // for a metallic-roughness texture, which scales them per hit
+    out.roughness = rough;
     double strength = 1;
     if (const tinygltf::Value* s = extension_value(m.extensions, "KHR_materials_emissive_strength", "emissiveStrength"))
         if (s->IsNumber()) strength = s->GetNumberAsDouble();
@@ -53,14 +55,15 @@ public:
 
     // The textures and alpha mode of material `mat` (the last of
     // s.materials) onto it (docs/gltf.md, "Textures"): its base colour
-    // texture, and its emissive, occlusion and normal textures where they
-    // read the coordinates its meshes carry (gltf/gltf_texture_coords.h).
+    // texture, and its emissive, occlusion, normal and metallic-roughness
+    // textures where they read the coordinates its meshes carry
+    // (gltf/gltf_texture_coords.h).
     void add_surface_of(const tinygltf::Material& mat, const std::string& name, Scene& s) {
         Material<double>& out = s.materials.back();
         const auto& pbr = mat.pbrMetallicRoughness;
         if (pbr.baseColorTexture.index >= 0) out.texture = texture_of(pbr.baseColorTexture.index, name, s, true);
         // The coordinates are compared only where the material has an
-        // emissive, occlusion or normal texture; then a bad transform of any of its
+        // emissive, occlusion, normal or metallic-roughness texture; then a bad transform of any of its
         // textures is reported with the material's name, and otherwise, as
         // before these were drawn, with the primitive that reads it. Either
         // texture's image and sampler must be good once it is drawn, as the
@@ -68,7 +71,8 @@ public:
         if (mat.occlusionTexture.index >= 0 && !(mat.occlusionTexture.strength >= 0 && mat.occlusionTexture.strength <= 1))
             fail(name + ": occlusionTexture's strength must be in [0, 1]");
         std::optional<TextureCoords> carried;
-        if (mat.emissiveTexture.index >= 0 || mat.occlusionTexture.index >= 0 || mat.normalTexture.index >= 0)
+        if (mat.emissiveTexture.index >= 0 || mat.occlusionTexture.index >= 0 || mat.normalTexture.index >= 0 ||
+            pbr.metallicRoughnessTexture.index >= 0)
             carried = carried_coords(mat, file_, name);
         auto drawn = [&](const auto& info) {
             const bool same = info.index >= 0 && texture_coords_of(info.texCoord, info.extensions, file_, name) == *carried;
@@ -84,7 +88,8 @@ public:
             out.normal_texture = texture_of(mat.normalTexture.index, name, s, false);
             out.normal_scale = mat.normalTexture.scale;
         }
-        unused_textures_ += pbr.metallicRoughnessTexture.index >= 0;
+        if (drawn(pbr.metallicRoughnessTexture))
+            out.metal_rough_texture = texture_of(pbr.metallicRoughnessTexture.index, name, s, false);
         const double alpha = pbr.baseColorFactor.size() == 4 ? std::clamp(pbr.baseColorFactor[3], 0.0, 1.0) : 1.0;
         if (mat.alphaMode == "MASK") {
             out.cutout = true;

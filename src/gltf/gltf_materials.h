@@ -13,7 +13,7 @@ namespace fh {
 
 struct GltfMaterialsAdded {
     int default_material = 0;  // glTF's default material, for primitives without one
-    int unused_textures = 0;   // textures not drawn (metallic-roughness, others' coordinates)
+    int unused_textures = 0;   // textures not drawn (on other coordinates than their mesh carries)
 };
 
 // Every material of the file, in its order, then glTF's default material,

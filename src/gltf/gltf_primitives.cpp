@@ -56,8 +56,9 @@ public:
 
     // The texture coordinates the primitive's material reads
     // (gltf/gltf_texture_coords.h: its base colour texture's, else its
-    // emissive, occlusion or normal texture's), moved by that texture's transform.
-    // Empty when its material has none of those textures.
+    // emissive, occlusion, normal or metallic-roughness texture's), moved
+    // by that texture's transform. Empty when its material has none of
+    // those textures.
     std::vector<dvec2> read_uvs(const tinygltf::Primitive& prim, const std::string& what) const {
         if (prim.material < 0 || size_t(prim.material) >= m_.materials.size()) return {};
         const std::optional<TextureCoords> coords =

@@ -52,6 +52,8 @@ std::optional<TextureCoords> carried_coords(const tinygltf::Material& mat, const
         return texture_coords_of(mat.occlusionTexture.texCoord, mat.occlusionTexture.extensions, file, what);
     if (mat.normalTexture.index >= 0)
         return texture_coords_of(mat.normalTexture.texCoord, mat.normalTexture.extensions, file, what);
+    const tinygltf::TextureInfo& mr = mat.pbrMetallicRoughness.metallicRoughnessTexture;
+    if (mr.index >= 0) return texture_coords_of(mr.texCoord, mr.extensions, file, what);
     return std::nullopt;
 }
 

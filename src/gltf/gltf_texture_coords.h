@@ -29,7 +29,8 @@ TextureCoords texture_coords_of(int tex_coord, const tinygltf::ExtensionMap& ext
 
 // The coordinates a material's primitives carry: those of its base colour
 // texture, else of its emissive texture, else of its occlusion texture,
-// else of its normal texture; nothing when it has none of them.
+// else of its normal texture, else of its metallic-roughness texture;
+// nothing when it has none of them.
 std::optional<TextureCoords> carried_coords(const tinygltf::Material& mat, const std::string& file,
                                             const std::string& what);
 

@@ -56,13 +56,17 @@ EffectPlan plan_effects(const Scene& scene, const Effects& asked, int max_depth,
     for (auto [effect, name] : {std::pair{&fx.diffuse, "diffuse"}, {&fx.specular, "specular"},
                                 {&fx.shadows, "shadows"}})
         if (!direct_light) skip(plan, *effect, name, "no directional or spot light on");
-    if (!any_material(scene, [](const auto& m) { return m.diffuse > 0; }))
+    // A metallic-roughness texture may give any hit diffuse and specular
+    // strength, and a metal (metallic > 0.5) may be polished to a mirror.
+    if (!any_material(scene, [](const auto& m) { return m.diffuse > 0 || m.metal_rough_texture >= 0; }))
         skip(plan, fx.diffuse, "diffuse", "no material has diffuse strength");
-    if (!any_material(scene, [](const auto& m) { return m.specular > 0; }))
+    if (!any_material(scene, [](const auto& m) { return m.specular > 0 || m.metal_rough_texture >= 0; }))
         skip(plan, fx.specular, "specular", "no material has specular strength");
     // Shadows only gate diffuse and specular.
     if (!fx.diffuse && !fx.specular) skip(plan, fx.shadows, "shadows", "no diffuse or specular term");
-    if (!any_material(scene, [](const auto& m) { return m.glazed && m.reflectivity > 0; }))
+    if (!any_material(scene, [](const auto& m) {
+            return (m.glazed && m.reflectivity > 0) || (m.metal_rough_texture >= 0 && m.metallic > 0.5);
+        }))
         skip(plan, fx.glazing, "glazing", "no glazed material with reflectivity > 0");
     plan.max_depth = fx.glazing ? max_depth : 0;
     return plan;

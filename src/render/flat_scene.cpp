@@ -14,6 +14,10 @@ LightTerms<T> terms(const Material<double>& m, const dvec3& light_color, double 
     LightTerms<T> t;
     if (fx.diffuse) t.diffuse = Color<T>(intensity * m.diffuse * light_color * m.diffuse_color);
     if (fx.specular) t.specular = Color<T>(intensity * m.specular * light_color * m.specular_color);
+    if (m.metal_rough_texture >= 0) {
+        t.tinted = Color<T>(intensity * light_color * m.diffuse_color);
+        t.white = Color<T>(intensity * light_color * 255.0);
+    }
     return t;
 }
 
@@ -58,9 +62,10 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
         // (An emissive texture shows lit or not; a turned normal only in
         // the lights' terms and the mirrored ray.)
         const bool bumpy = mat.normal_texture >= 0 && (fx.diffuse || fx.specular || (mat.glazed && plan.max_depth > 0));
+        const bool metal_rough = mat.metal_rough_texture >= 0 && (fx.diffuse || fx.specular || plan.max_depth > 0);
         const bool textured =
             ((mat.texture >= 0 || mat.occlusion_texture >= 0 || coloured[m]) && (fx.ambient || fx.diffuse)) ||
-            mat.emissive_texture >= 0 || bumpy;
+            mat.emissive_texture >= 0 || bumpy || metal_rough;
         const dvec3 term = ambient[m];
         // (Added only when there is some: bytes as before for the report's.)
         if (mat.emissive != dvec3(0)) ambient[m] += mat.emissive;
@@ -69,9 +74,12 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
                              whole >= 0, textured ? mat.texture : -1, textured ? Color<T>(term) : Color<T>(0),
                              textured ? Color<T>(mat.emissive) : Color<T>(0),
                              textured ? mat.emissive_texture : -1, textured ? mat.occlusion_texture : -1,
-                             T(mat.occlusion_strength), bumpy ? mat.normal_texture : -1, T(mat.normal_scale)});
+                             T(mat.occlusion_strength), bumpy ? mat.normal_texture : -1, T(mat.normal_scale),
+                             metal_rough ? mat.metal_rough_texture : -1, T(mat.metallic), T(mat.roughness)});
         f.textured |= textured;
-        f.fractional_exponents |= whole < 0 && fx.specular;
+        f.metal_rough |= metal_rough;
+        // (Its exponent varies per hit: std::pow.)
+        f.fractional_exponents |= (whole < 0 || metal_rough) && fx.specular;
         if (whole > 0) f.exponent_bits = std::max(f.exponent_bits, int(std::bit_width(unsigned(whole))));
     }
 

@@ -41,14 +41,23 @@ struct MaterialShading {
     // -1: none, or no light or mirror would show it).
     int normal_texture = -1;
     T normal_scale = 1;
+    // Its metallic-roughness texture: metalness metallic x B and roughness
+    // roughness x G per hit, mapped onto the terms by render/metal_rough.h
+    // (-1: none, or nothing lit or mirrored shows it).
+    int metal_rough_texture = -1;
+    T metallic = 0, roughness = 1;
 };
 
 // intensity * strength * (light colour (.) material colour), for one light and
 // one material; the spot light's falloff multiplies it per point.
+// For a material with a metallic-roughness texture, whose strengths and
+// highlight's tint vary per hit, the products before them: intensity x
+// (light colour (.) diffuse colour), and x (light colour x 255).
 template <typename T>
 struct LightTerms {
     Color<T> diffuse{0};
     Color<T> specular{0};
+    Color<T> tinted{0}, white{0};
 };
 
 template <typename T>
@@ -67,6 +76,7 @@ struct FlatScene {
     std::vector<Texture> textures;  // Scene::textures, when some material is textured
     bool textured = false;          // some material is (instances only: glTF's)
     bool blended = false;           // some instance's material is see-through (glTF's BLEND)
+    bool metal_rough = false;       // some material's metallic-roughness texture is read
     bool fractional_exponents = false;  // some material has whole == false: std::pow needed
     int exponent_bits = 0;              // bits of the largest whole exponent
     EffectPlan plan;

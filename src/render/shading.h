@@ -43,6 +43,7 @@
 #include "render/background.h"
 #include "render/flat_scene.h"
 #include "render/instance_walk.h"
+#include "render/metal_rough.h"
 #include "render/normal_map.h"
 #include "render/stats.h"
 
@@ -124,6 +125,9 @@ private:
         // opacity (1: opaque), and where a ray going on past it starts.
         Lanes<T> opacity;
         Vec3Lanes<T> beyond;
+        // A scene with metallic-roughness textures (FlatScene::metal_rough):
+        // each hit's metalness and roughness, read for those materials only.
+        Lanes<T> metal, rough;
     };
 
     // A see-through ray goes on past this many surfaces at most; the last
@@ -277,6 +281,7 @@ private:
                 put_hit(point, normal, shading, material, lanes, first, s, geometric, ambient);
                 if (scene_.textured) untextured(lanes, first, s);
                 if (scene_.blended) put(s.opacity, splat(T(1)), lanes, first);
+                if (scene_.metal_rough) put_metal_rough(splat(T(0)), splat(T(1)), lanes, first, s);
                 return;
             }
             const FlatInstance<T>& inst = instances_->instances[size_t(in)];
@@ -299,6 +304,22 @@ private:
             shading = smooth || bumpy ? normalize(inst.normal_to_world.vector(shading)) : normal;
             put_hit(point, normal, shading, inst.material, lanes, first, s, geometric, ambient);
             if (scene_.textured) textured(mesh, prim, at, inst.material, lanes, first, s, ambient);
+            if (scene_.metal_rough) {
+                // Per hit where the material has the texture; its factors elsewhere (not read).
+                if (m.metal_rough_texture >= 0 && !mesh.uvs.empty()) {
+                    Lanes<T> metal, rough;
+                    metal_rough_at<T>(scene_.textures[size_t(m.metal_rough_texture)], at, m.metallic, m.roughness,
+                                      metal, rough);
+                    put_metal_rough(metal, rough, lanes, first, s);
+                    if constexpr (kReflections) {
+                        const LaneInts<T> glazed = polished<T>(metal, rough);
+                        put(s.glazed, glazed, lanes, first);
+                        put(s.reflectivity, select(glazed, mirror_share<T>(metal, rough), splat(T(0))), lanes, first);
+                    }
+                } else {
+                    put_metal_rough(splat(m.metallic), splat(m.roughness), lanes, first, s);
+                }
+            }
             if (scene_.blended) {
                 const Cutout* cut = inst.cutout >= 0 ? &instances_->cutouts[size_t(inst.cutout)] : nullptr;
                 put(s.opacity, cut && cut->blend ? alpha_at(mesh, *cut, prim, object_point) : splat(T(1)), lanes,
@@ -349,6 +370,13 @@ private:
         } else {
             put(ambient, tinted + m.emissive, lanes, first);
         }
+    }
+
+    template <typename First>
+    static FH_HOT_INLINE void put_metal_rough(const Lanes<T>& metal, const Lanes<T>& rough, const LaneInts<T>& lanes,
+                                              First first, SurfaceLanes& s) {
+        put(s.metal, metal, lanes, first);
+        put(s.rough, rough, lanes, first);
     }
 
     // In a textured scene, a surface with neither texels nor vertex colours
@@ -424,6 +452,21 @@ private:
         Lanes<T> exponent;
         LaneInts<T> whole_exponent;
         for_each_distinct(s.material, lit, [&](int m, const LaneInts<T>& lanes, auto first) FH_HOT_LAMBDA {
+            if constexpr (kInstances)
+                if (scene_.metal_rough && scene_.shading[size_t(m)].metal_rough_texture >= 0) {
+                    // Strengths, tint and exponent per hit (render/metal_rough.h).
+                    ColorLanes<T> hit_kd, hit_ks;
+                    Lanes<T> hit_exponent;
+                    metal_rough_terms<T>(s.metal, s.rough, terms[m].tinted, terms[m].white, hit_kd, hit_ks,
+                                         hit_exponent);
+                    put(kd, hit_kd, lanes, first);
+                    put(ks, hit_ks, lanes, first);
+                    if constexpr (kSpecularTerm) {
+                        put(exponent, hit_exponent, lanes, first);
+                        put(whole_exponent, LaneInts<T>{}, lanes, first);
+                    }
+                    return;
+                }
             put(kd, Vec3Lanes<T>::splat(terms[m].diffuse), lanes, first);
             put(ks, Vec3Lanes<T>::splat(terms[m].specular), lanes, first);
             if constexpr (kSpecularTerm) {

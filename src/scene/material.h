@@ -36,6 +36,12 @@ struct Material {
     // tangential part times normal_scale (render/normal_map.h).
     int normal_texture = -1;
     T normal_scale = 1;
+    // Its metallic-roughness texture (read linear): per hit, metalness
+    // metallic x B and roughness roughness x G (the factors glTF's) take the
+    // place of the factors in the mapping onto the terms above
+    // (gltf/gltf_materials.cpp, render/metal_rough.h).
+    int metal_rough_texture = -1;
+    T metallic = 0, roughness = 1;
     // glTF's alphaMode MASK: the surface is there only where its alpha --
     // `alpha` times the texture's -- is at least alpha_cutoff; elsewhere
     // camera and shadow rays pass through it.

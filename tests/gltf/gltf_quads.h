@@ -254,8 +254,9 @@ inline Scene lit(const std::string& json, const Lighting& l = {}) {
 // centre off the quads' edges and diagonals.
 // Perspective: the eye at (cx, 0, 10), the image plane at distance 9, so
 // that the plane z = 1 is seen as the orthographic camera sees it.
+// counts: where to put the frame's ray counts, if anywhere.
 inline Image top_view(const Scene& s, Precision precision, int w = 8, int h = 8, double half_height = 1, double cx = 0.05,
-               Projection projection = Projection::orthographic) {
+               Projection projection = Projection::orthographic, RayCounts* counts = nullptr) {
     Camera c;
     c.projection = projection;
     c.projection_distance = 9;
@@ -269,6 +270,7 @@ inline Image top_view(const Scene& s, Precision precision, int w = 8, int h = 8,
     settings.precision = precision;
     const FrameResult r = render_frame(s, c, settings, nullptr);
     EXPECT_EQ(r.counts.nonfinite_samples, 0u) << precision_name(precision);
+    if (counts) *counts = r.counts;
     return r.image;
 }
 
