@@ -29,7 +29,10 @@ std::vector<MorphTarget> read_morph_targets(const tinygltf::Primitive& prim, con
         const std::string named = what + " morph target " + std::to_string(t);
         MorphTarget target;
         for (const auto& [attribute, accessor] : prim.targets[t]) {
-            if (attribute != "POSITION" && attribute != "NORMAL" && attribute != "TANGENT") continue;
+            // (TANGENT only where the primitive has tangents to move.)
+            if (attribute != "POSITION" && attribute != "NORMAL" &&
+                (attribute != "TANGENT" || !prim.attributes.count("TANGENT")))
+                continue;
             std::vector<dvec3> v = vectors(read.numbers(accessor, 3, named + " " + attribute));
             if (v.size() != vertices)
                 read.fail(named + ": " + attribute + " has " + std::to_string(v.size()) + " elements, POSITION " +

@@ -86,7 +86,9 @@ public:
         }
         if (drawn(mat.normalTexture)) {
             out.normal_texture = texture_of(mat.normalTexture.index, name, s, false);
-            out.normal_scale = mat.normalTexture.scale;
+            // Past a million the direction no longer changes; its square
+            // would overflow a float's range.
+            out.normal_scale = std::clamp(mat.normalTexture.scale, -1e6, 1e6);
         }
         if (drawn(pbr.metallicRoughnessTexture))
             out.metal_rough_texture = texture_of(pbr.metallicRoughnessTexture.index, name, s, false);

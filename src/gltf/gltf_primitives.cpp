@@ -5,7 +5,6 @@
 
 #include "gltf/gltf_texture_coords.h"
 #include "meshes/mesh_loader.h"
-#include "scene/mesh_tangents.h"
 
 namespace fh {
 
@@ -113,15 +112,15 @@ public:
     // The primitive's TANGENT, where its material has a normal texture to
     // read it by and its mesh has NORMALs (without them the specification
     // has tangents ignored): xyz as they are, w as its sign. Without
-    // TANGENT, they are made from the normals and coordinates
-    // (scene/mesh_tangents.h).
+    // TANGENT, they are made from the normals and coordinates at each pose
+    // (Mesh::make_tangents).
     void read_tangents(const tinygltf::Primitive& prim, const std::string& what, Mesh& mesh) const {
         if (mesh.normals.empty() || mesh.uvs.empty() || prim.material < 0 ||
             size_t(prim.material) >= m_.materials.size() || m_.materials[size_t(prim.material)].normalTexture.index < 0)
             return;
         const auto tangent = prim.attributes.find("TANGENT");
         if (tangent == prim.attributes.end()) {
-            mesh.tangents = vertex_tangents(mesh);
+            mesh.make_tangents = true;
             return;
         }
         const std::vector<double> t = read_.numbers(tangent->second, 4, what + " TANGENT");

@@ -76,8 +76,19 @@ void flatten(const Scene& scene, FlatGeometry<T>& g) {
     for (const auto& c : scene.triangle_uvs)
         g.uvs.push_back({T(c[0].x), T(c[0].y), T(c[1].x), T(c[1].y), T(c[2].x), T(c[2].y)});
     g.tangents.clear();
-    for (const auto& t : scene.triangle_tangents)
-        g.tangents.push_back({Vec3<T>(t[0]), Vec3<T>(t[1]), Vec3<T>(t[2]), t[0].w + t[1].w + t[2].w < 0 ? T(-1) : T(1)});
+    for (size_t i = 0; i < scene.triangle_tangents.size(); ++i) {
+        const auto& t = scene.triangle_tangents[i];
+        // The tangents' w is against the file's normals; shading turns those
+        // to the side of the face's normal (SmoothTriangle). Where they point
+        // against it, so do t and w: the turned normal comes out mirrored
+        // through the face, as the face's normals are.
+        const bool against = smooth(scene, i) && glm::dot(scene.vertex_normals[i][0] + scene.vertex_normals[i][1] +
+                                                                  scene.vertex_normals[i][2],
+                                                              scene.triangles[i].normal) < 0;
+        const T sign = against ? T(-1) : T(1);
+        g.tangents.push_back({sign * Vec3<T>(t[0]), sign * Vec3<T>(t[1]), sign * Vec3<T>(t[2]),
+                              sign * (t[0].w + t[1].w + t[2].w < 0 ? T(-1) : T(1))});
+    }
     g.colors.clear();
     for (const auto& c : scene.triangle_colors) g.colors.push_back({Color<T>(c[0]), Color<T>(c[1]), Color<T>(c[2])});
     g.alphas.clear();

@@ -107,8 +107,9 @@ struct TrianglePoint {
     Lanes<T> b1, b2, u, v;
 };
 
-// A triangle's tangents at v0, v1 and v2 (a glTF TANGENT's xyz), and the
-// bitangent's sign w (theirs: the three's, as a mesh's vertices share it).
+// A triangle's tangents at v0, v1 and v2 (a glTF TANGENT's xyz, or those
+// made for its corners: scene/mesh_tangents.h), and the bitangent's sign w
+// (the three's, as a triangle's corners share it).
 template <typename T>
 struct TriangleTangents {
     Vec3<T> t0, t1, t2;
@@ -177,7 +178,7 @@ struct FlatGeometry {
     // An instance's textured mesh: each triangle's texture coordinates, by
     // its index in the Scene (triangle_source's values); else empty.
     BigArray<TriangleUvs<T>> uvs;
-    // An instance's mesh with tangents (a glTF TANGENT's): each triangle's,
+    // An instance's mesh with tangents (given or made): each triangle's,
     // the same way; else empty.
     BigArray<TriangleTangents<T>> tangents;
     // An instance's mesh with vertex colours: each triangle's, the same way.

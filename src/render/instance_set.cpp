@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "scene/mesh_tangents.h"
+
 namespace fh {
 
 namespace {
@@ -21,6 +23,8 @@ Scene mesh_scene(const Mesh& mesh) {
         s.triangle_tangents.reserve(mesh.triangles.size());
         for (const auto& t : mesh.triangles)
             s.triangle_tangents.push_back({mesh.tangents[t[0]], mesh.tangents[t[1]], mesh.tangents[t[2]]});
+    } else if (mesh.make_tangents) {
+        s.triangle_tangents = corner_tangents(mesh);
     }
     if (!mesh.colors.empty()) {
         s.triangle_colors.reserve(mesh.triangles.size());

@@ -43,7 +43,8 @@ FH_HOT_INLINE Vec3Lanes<T> normal_mapped(const FlatGeometry<T>& mesh, int prim, 
     const Vec3Lanes<T> b = w * cross(n, t);
     const Vec3Lanes<T> turned = x * t + y * b + z * n;
     const Lanes<T> turned2 = dot(turned, turned);
-    const LaneInts<T> good = (length2 > T(1e-6) * dot(along, along)) & (length2 > T(0)) & (turned2 > T(1e-12));
+    const LaneInts<T> good = (length2 > T(1e-6) * dot(along, along)) & (length2 > T(0)) & (turned2 > T(1e-12)) &
+                             (turned2 < kInfinity<T>);
     return select(good, turned * (T(1) / sqrt(turned2)), n);
 }
 

@@ -41,8 +41,13 @@ Mesh deformed(const Deformation& d, const std::vector<double>& weights, const st
                 if (const double w = s.weight[v * k + i]; w != 0) blend += w * joint_matrices[s.joint[v * k + i]];
             m.positions[v] = dvec3(blend * glm::dvec4(m.positions[v], 1.0));
             if (!m.normals.empty()) m.normals[v] = normal_matrix(blend) * m.normals[v];
-            // A tangent lies in the surface: it moves as its edges do.
-            if (!m.tangents.empty()) m.tangents[v] = glm::dvec4(glm::dmat3(blend) * dvec3(m.tangents[v]), m.tangents[v].w);
+            // A tangent lies in the surface: it moves as its edges do; a
+            // mirroring blend turns its bitangent's sign too.
+            if (!m.tangents.empty()) {
+                const glm::dmat3 a(blend);
+                m.tangents[v] = glm::dvec4(a * dvec3(m.tangents[v]), glm::determinant(a) < 0 ? -m.tangents[v].w
+                                                                                          : m.tangents[v].w);
+            }
         }
     }
     return m;

@@ -45,11 +45,14 @@ struct Mesh {
     // One alpha per position (a glTF COLOR_0 VEC4's, in [0, 1]) multiplying a
     // MASKed material's alpha, or empty (all 1: also when every one is).
     std::vector<double> alphas;
-    // One tangent per position (a glTF TANGENT, or made from the normals by
-    // vertex_tangents: xyz along increasing u, w the bitangent's sign, +1
-    // or -1), or empty: a normal texture then takes each triangle's own
-    // (render/normal_map.h).
+    // One tangent per position (a glTF TANGENT: xyz along increasing u, w
+    // the bitangent's sign, +1 or -1), or empty.
     std::vector<glm::dvec4> tangents;
+    // No tangents given, but a normal texture needs them: they are made for
+    // each triangle's corners from the normals and coordinates, at each
+    // pose (scene/mesh_tangents.h). Else a mesh without tangents gives a
+    // normal texture each triangle's own (render/normal_map.h).
+    bool make_tangents = false;
 };
 
 struct PlacedMesh {

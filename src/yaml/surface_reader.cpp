@@ -179,7 +179,7 @@ private:
     // (and counted) like the file's own.
     Mesh read_mesh(const MapReader& m, int material, const glm::dmat4& to_world, PlacedMesh& placed) {
         const MeshData& data = load(m);
-        Mesh mesh{data.positions, data.normals, data.triangles, material, m.boolean_or("smooth", false), {}, {}, {}, {}};
+        Mesh mesh{data.positions, data.normals, data.triangles, material, m.boolean_or("smooth", false), {}, {}, {}, {}, false};
         placed = fh::place(mesh, to_world);
         size_t kept = 0;
         for (size_t i = 0; i < mesh.triangles.size(); ++i) {
@@ -211,7 +211,7 @@ private:
     std::shared_ptr<Mesh> scene_mesh(const MapReader& m) {
         const MeshData& data = load(m);
         return std::make_shared<Mesh>(Mesh{data.positions, data.normals, data.triangles, 0,
-                                           m.boolean_or("smooth", false), {}, data.colors, {}, {}});
+                                           m.boolean_or("smooth", false), {}, data.colors, {}, {}, false});
     }
 
     void read_instance(const YAML::Node& node, const Place& place, NamedSurface& named) {

@@ -110,7 +110,7 @@ TEST(GltfNormalTexture, AMeshsTangentsReplaceTheTrianglesOwn) {
     // (-e, a, a) in the world, the right one's (e, a, a) is (-a, e, a). With
     // w = -1, b = +x: (e, a, a) and (a, e, a). Without NORMALs the file's
     // tangents are ignored (as glTF requires): the triangles' own, as in the
-    // first test; with NORMALs and no TANGENT, the vertices' are made from
+    // first test; with NORMALs and no TANGENT, the corners' are made from
     // the quad: the same.
     const double a = component(218), e = component(128);
     struct Case {
@@ -126,8 +126,8 @@ TEST(GltfNormalTexture, AMeshsTangentsReplaceTheTrianglesOwn) {
         const std::string json = tangent_quad(c.tangent, c.normals);
         const GltfFile f = load(json);
         const Mesh& mesh = *f.scene.meshes[0].mesh;
-        EXPECT_EQ(mesh.tangents.size(), c.normals ? 4u : 0u);
-        if (c.tangent.empty()) EXPECT_EQ(mesh.tangents[0], glm::dvec4(1, 0, 0, 1));
+        EXPECT_EQ(mesh.tangents.size(), c.normals && !c.tangent.empty() ? 4u : 0u);
+        EXPECT_EQ(mesh.make_tangents, c.normals && c.tangent.empty());
         expect_halves_under_suns(json, c.left, c.right,
                                  (c.tangent.empty() ? "no TANGENT" : "w " + num(c.tangent[3])) +
                                      (c.normals ? "" : ", no normals") + ", ");
@@ -137,6 +137,40 @@ TEST(GltfNormalTexture, AMeshsTangentsReplaceTheTrianglesOwn) {
     for (const Precision p : kPrecisions)
         expect_columns(top_view(lit(tangent_quad({0, 1, 0, 1}), {0.2, 0.6, {-1, 0, -1}}), p), 0, 8, {159, 159, 159},
                        precision_name(p));
+}
+
+TEST(GltfNormalTexture, NormalsAgainstTheWindingKeepTheirFrame) {
+    // The quad wound facing down but its NORMALs up, seen from above (their
+    // side): shading turns the normals to the face's side, and the tangent
+    // frame with them, so what shows is the file's own frame, as for a quad
+    // wound up -- the first test's pixels -- with a TANGENT (+x, w 1) and
+    // with tangents made from the normals.
+    const double a = component(218), e = component(128);
+    const dvec3 left{a, e, a}, right{e, a, a};
+    for (const bool given : {true, false}) {
+        Quad q{-1, 1, -1, 1, 0, 0};
+        q.down = true;
+        q.normals = true;
+        if (given)
+            for (int v = 0; v < 4; ++v) q.tangents.insert(q.tangents.end(), {1, 0, 0, 1});
+        const std::string json = quads_file({q}, surfaces({bumpy_material()}, {{0, 0}},
+                                                          {image_json(rgba_png(2, 1, kTwoTilts))}, {kNearestClampedSampler}));
+        expect_halves_under_suns(json, left, right, given ? "TANGENT given, " : "tangents made, ");
+    }
+}
+
+TEST(GltfNormalTexture, AHugeScaleStaysADirection) {
+    // scale 1e20 is held at 1e6, past which the direction no longer
+    // changes: the left texel's normal lies almost along (a, e, 0): unlit
+    // from above (51 + 153 x 1e-6), from +x lit by cos 45 degrees (159).
+    const std::string json = quads_file({{-1, 1, -1, 1, 0, 0}},
+                                        surfaces({bumpy_material(", \"scale\": 1e20")}, {{0, 0}},
+                                                 {image_json(rgba_png(2, 1, kTwoTilts))}, {kNearestClampedSampler}));
+    EXPECT_EQ(load(json).scene.materials[0].normal_scale, 1e6);
+    for (const Precision p : kPrecisions) {
+        expect_columns(top_view(lit(json), p), 0, 4, {51, 51, 51}, precision_name(p));
+        expect_columns(top_view(lit(json, {0.2, 0.6, {-1, 0, -1}}), p), 0, 4, {159, 159, 159}, precision_name(p));
+    }
 }
 
 TEST(GltfNormalTexture, TangentsMorphAndSkinWithTheirMesh) {
@@ -165,6 +199,9 @@ TEST(GltfNormalTexture, TangentsMorphAndSkinWithTheirMesh) {
     const Mesh skinned = deformed(d, {0.5}, {turn});
     EXPECT_EQ(skinned.tangents[0], glm::dvec4(-1, 1, 0, -1));
     EXPECT_EQ(skinned.normals[0], dvec3(0, 0, 0.5));
+    // A joint that mirrors x: the tangent (-0.5, 0.5, 0) and its sign turned, w 1.
+    const glm::dmat4 mirror{{-1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+    EXPECT_EQ(deformed(d, {0.5}, {mirror}).tangents[0], glm::dvec4(-0.5, 0.5, 0, 1));
 }
 
 TEST(GltfNormalTexture, SeenFromBehindTheTurnedNormalTurnsWithTheFace) {
