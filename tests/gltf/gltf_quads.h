@@ -17,6 +17,8 @@
 #include "gltf/gltf_load.h"
 #include "images/image_writer.h"
 #include "images/png_writer.h"
+#include "render/effect_plan.h"
+#include "render/flat_scene.h"
 #include "render/render.h"
 
 namespace fh::gltf_test {
@@ -272,6 +274,21 @@ inline Image top_view(const Scene& s, Precision precision, int w = 8, int h = 8,
     EXPECT_EQ(r.counts.nonfinite_samples, 0u) << precision_name(precision);
     if (counts) *counts = r.counts;
     return r.image;
+}
+
+// That material 0's texture `texture` (a MaterialShading member) is read,
+// as texture `index`, and the FlatScene's `flag` set, when the frame has
+// every effect, and neither when its ambient light alone shows it.
+template <typename Texture, typename Flag>
+void expect_read_only_when_lit(const Scene& s, Texture texture, Flag flag, int index) {
+    Effects ambient_only;
+    ambient_only.diffuse = ambient_only.specular = ambient_only.shadows = ambient_only.glazing = false;
+    const auto dark = FlatScene<double>::build(s, plan_effects(s, ambient_only, 5));
+    EXPECT_EQ(dark.shading[0].*texture, -1);
+    EXPECT_FALSE(dark.*flag);
+    const auto lit = FlatScene<double>::build(s, plan_effects(s, Effects{}, 5));
+    EXPECT_EQ(lit.shading[0].*texture, index);
+    EXPECT_TRUE(lit.*flag);
 }
 
 inline Rgb pixel(const Image& im, int i, int j) {

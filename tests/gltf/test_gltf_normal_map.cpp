@@ -271,14 +271,7 @@ TEST(GltfNormalTexture, ItIsTracedOnlyWhereALightOrAMirrorShowsIt) {
     const Scene s = lit(quads_file({{-1, 1, -1, 1, 0, 0}}, surfaces({bumpy_material()}, {{0, 0}},
                                                                       {image_json(rgba_png(2, 1, kTwoTilts))},
                                                                       {kNearestClampedSampler})));
-    Effects ambient_only;
-    ambient_only.diffuse = ambient_only.specular = ambient_only.shadows = ambient_only.glazing = false;
-    const auto flat = FlatScene<double>::build(s, plan_effects(s, ambient_only, 5));
-    EXPECT_EQ(flat.shading[0].normal_texture, -1);
-    EXPECT_FALSE(flat.textured);
-    const auto lit_flat = FlatScene<double>::build(s, plan_effects(s, Effects{}, 5));
-    EXPECT_EQ(lit_flat.shading[0].normal_texture, 0);
-    EXPECT_TRUE(lit_flat.textured);
+    expect_read_only_when_lit(s, &MaterialShading<double>::normal_texture, &FlatScene<double>::textured, 0);
 }
 
 }  // namespace
