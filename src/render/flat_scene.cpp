@@ -15,8 +15,11 @@ LightTerms<T> terms(const Material<double>& m, const dvec3& light_color, double 
     if (fx.diffuse) t.diffuse = Color<T>(intensity * m.diffuse * light_color * m.diffuse_color);
     if (fx.specular) t.specular = Color<T>(intensity * m.specular * light_color * m.specular_color);
     if (m.metal_rough_texture >= 0) {
-        t.tinted = Color<T>(intensity * light_color * m.diffuse_color);
-        t.white = Color<T>(intensity * light_color * 255.0);
+        if (fx.diffuse) t.diffuse_unit = Color<T>(intensity * light_color * m.diffuse_color);
+        if (fx.specular) {
+            t.tinted = Color<T>(intensity * light_color * m.diffuse_color);
+            t.white = Color<T>(intensity * light_color * 255.0);
+        }
     }
     return t;
 }
@@ -61,8 +64,10 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
         const Material<double>& mat = scene.materials[m];
         // (An emissive texture shows lit or not; a turned normal only in
         // the lights' terms and the mirrored ray.)
-        const bool bumpy = mat.normal_texture >= 0 && (fx.diffuse || fx.specular || (mat.glazed && plan.max_depth > 0));
-        const bool metal_rough = mat.metal_rough_texture >= 0 && (fx.diffuse || fx.specular || plan.max_depth > 0);
+        // (A metal's metallic-roughness texture may make a mirror of any hit.)
+        const bool may_mirror = (mat.glazed || (mat.metal_rough_texture >= 0 && mat.metallic > 0.5)) && plan.max_depth > 0;
+        const bool bumpy = mat.normal_texture >= 0 && (fx.diffuse || fx.specular || may_mirror);
+        const bool metal_rough = mat.metal_rough_texture >= 0 && (fx.diffuse || fx.specular || may_mirror);
         const bool textured =
             ((mat.texture >= 0 || mat.occlusion_texture >= 0 || coloured[m]) && (fx.ambient || fx.diffuse)) ||
             mat.emissive_texture >= 0 || bumpy || metal_rough;

@@ -52,12 +52,14 @@ struct MaterialShading {
 // one material; the spot light's falloff multiplies it per point.
 // For a material with a metallic-roughness texture, whose strengths and
 // highlight's tint vary per hit, the products before them: intensity x
-// (light colour (.) diffuse colour), and x (light colour x 255).
+// (light colour (.) diffuse colour) for the diffuse term (0 when it is not
+// simulated) and for the highlight's tint, and intensity x (light colour x
+// 255) for its white.
 template <typename T>
 struct LightTerms {
     Color<T> diffuse{0};
     Color<T> specular{0};
-    Color<T> tinted{0}, white{0};
+    Color<T> diffuse_unit{0}, tinted{0}, white{0};
 };
 
 template <typename T>

@@ -56,12 +56,13 @@ __attribute__((noinline)) void metal_rough_at(const Texture& texture, const Tria
 }
 
 // One light's colour terms and Phong exponents at hits of metalness `metal`
-// and roughness `rough` (tinted, white: its LightTerms).
+// and roughness `rough` (unit, tinted, white: its LightTerms' diffuse_unit,
+// tinted and white).
 template <typename T>
-__attribute__((noinline)) void metal_rough_terms(const Lanes<T>& metal, const Lanes<T>& rough, const Color<T>& tinted,
-                                                 const Color<T>& white, ColorLanes<T>& kd, ColorLanes<T>& ks,
-                                                 Lanes<T>& exponent) {
-    kd = diffuse_strength<T>(metal, rough) * tinted;
+__attribute__((noinline)) void metal_rough_terms(const Lanes<T>& metal, const Lanes<T>& rough, const Color<T>& unit,
+                                                 const Color<T>& tinted, const Color<T>& white, ColorLanes<T>& kd,
+                                                 ColorLanes<T>& ks, Lanes<T>& exponent) {
+    kd = diffuse_strength<T>(metal, rough) * unit;
     ks = specular_strength<T>(metal, rough) * (metal * tinted + (T(1) - metal) * white);
     exponent = phong_exponent<T>(rough);
 }

@@ -281,7 +281,11 @@ private:
                 put_hit(point, normal, shading, material, lanes, first, s, geometric, ambient);
                 if (scene_.textured) untextured(lanes, first, s);
                 if (scene_.blended) put(s.opacity, splat(T(1)), lanes, first);
-                if (scene_.metal_rough) put_metal_rough(splat(T(0)), splat(T(1)), lanes, first, s);
+                if (scene_.metal_rough) {
+                    // (A scene file may give a shape a glTF material: its factors.)
+                    const MaterialShading<T>& m = scene_.shading[size_t(material)];
+                    put_metal_rough(splat(m.metallic), splat(m.roughness), lanes, first, s);
+                }
                 return;
             }
             const FlatInstance<T>& inst = instances_->instances[size_t(in)];
@@ -457,8 +461,8 @@ private:
                     // Strengths, tint and exponent per hit (render/metal_rough.h).
                     ColorLanes<T> hit_kd, hit_ks;
                     Lanes<T> hit_exponent;
-                    metal_rough_terms<T>(s.metal, s.rough, terms[m].tinted, terms[m].white, hit_kd, hit_ks,
-                                         hit_exponent);
+                    metal_rough_terms<T>(s.metal, s.rough, terms[m].diffuse_unit, terms[m].tinted, terms[m].white,
+                                         hit_kd, hit_ks, hit_exponent);
                     put(kd, hit_kd, lanes, first);
                     put(ks, hit_ks, lanes, first);
                     if constexpr (kSpecularTerm) {
