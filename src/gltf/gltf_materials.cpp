@@ -63,10 +63,11 @@ public:
         const auto& pbr = mat.pbrMetallicRoughness;
         if (pbr.baseColorTexture.index >= 0) out.texture = texture_of(pbr.baseColorTexture.index, name, s, true);
         // The coordinates are compared only where the material has an
-        // emissive, occlusion, normal or metallic-roughness texture; then a bad transform of any of its
-        // textures is reported with the material's name, and otherwise, as
-        // before these were drawn, with the primitive that reads it. Either
-        // texture's image and sampler must be good once it is drawn, as the
+        // emissive, occlusion, normal or metallic-roughness texture; then a
+        // bad transform of any of its textures is reported with the
+        // material's name, and otherwise, as before these were drawn, with
+        // the primitive that reads it. Each such texture's image and sampler
+        // must be good once it is drawn, as the
         // base colour texture's must.
         if (mat.occlusionTexture.index >= 0 && !(mat.occlusionTexture.strength >= 0 && mat.occlusionTexture.strength <= 1))
             fail(name + ": occlusionTexture's strength must be in [0, 1]");
