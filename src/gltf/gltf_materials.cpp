@@ -67,8 +67,7 @@ public:
         // bad transform of any of its textures is reported with the
         // material's name, and otherwise, as before these were drawn, with
         // the primitive that reads it. Each such texture's image and sampler
-        // must be good once it is drawn, as the
-        // base colour texture's must.
+        // must be good once it is drawn, as the base colour texture's must.
         if (mat.occlusionTexture.index >= 0 && !(mat.occlusionTexture.strength >= 0 && mat.occlusionTexture.strength <= 1))
             fail(name + ": occlusionTexture's strength must be in [0, 1]");
         std::optional<TextureCoords> carried;
