@@ -64,9 +64,7 @@ EffectPlan plan_effects(const Scene& scene, const Effects& asked, int max_depth,
         skip(plan, fx.specular, "specular", "no material has specular strength");
     // Shadows only gate diffuse and specular.
     if (!fx.diffuse && !fx.specular) skip(plan, fx.shadows, "shadows", "no diffuse or specular term");
-    if (!any_material(scene, [](const auto& m) {
-            return (m.glazed && m.reflectivity > 0) || (m.metal_rough_texture >= 0 && m.metallic > 0.5);
-        }))
+    if (!any_material(scene, [](const auto& m) { return m.may_mirror(); }))
         skip(plan, fx.glazing, "glazing", "no glazed material with reflectivity > 0");
     plan.max_depth = fx.glazing ? max_depth : 0;
     return plan;

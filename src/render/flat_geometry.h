@@ -259,9 +259,9 @@ struct FlatGeometry {
         // dP/du = (dv2 e1 - dv1 e2) / det, dP/dv = (du1 e2 - du2 e1) / det.
         const T det = du1 * dv2 - du2 * dv1;
         if (!(det != 0) || !std::isfinite(det)) return false;
-        du = (det > 0 ? T(1) : T(-1)) * (dv2 * e1 - dv1 * e2);
-        const Vec3<T> dv = du1 * e2 - du2 * e1;  // dP/dv times det: the sign below is det^2's
-        w = glm::dot(glm::cross(glm::cross(e1, e2), dv2 * e1 - dv1 * e2), dv) > 0 ? T(-1) : T(1);
+        const Vec3<T> along = dv2 * e1 - dv1 * e2, dv = du1 * e2 - du2 * e1;  // dP/du, dP/dv times det
+        du = (det > 0 ? T(1) : T(-1)) * along;
+        w = glm::dot(glm::cross(glm::cross(e1, e2), along), dv) > 0 ? T(-1) : T(1);  // the sign is det^2's
         return glm::dot(du, du) > 0;
     }
 

@@ -65,8 +65,7 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
         // An emissive texture shows lit or not; a turned normal and a
         // metallic-roughness texture only in the lights' terms and the
         // mirrored ray -- and a metal's texture may make a mirror of any hit.
-        const bool may_mirror =
-            (mat.glazed || (mat.metal_rough_texture >= 0 && mat.metallic > 0.5)) && plan.max_depth > 0;
+        const bool may_mirror = mat.may_mirror() && plan.max_depth > 0;
         const bool bumpy = mat.normal_texture >= 0 && (fx.diffuse || fx.specular || may_mirror);
         const bool metal_rough = mat.metal_rough_texture >= 0 && (fx.diffuse || fx.specular || may_mirror);
         const bool textured =

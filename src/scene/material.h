@@ -42,6 +42,10 @@ struct Material {
     // (gltf/gltf_materials.cpp, render/metal_rough.h).
     int metal_rough_texture = -1;
     T metallic = 0, roughness = 1;
+
+    // A hit may mirror: glazed with some reflectivity, or a metal whose
+    // metallic-roughness texture may polish any hit (metallic > 0.5).
+    bool may_mirror() const { return (glazed && reflectivity > 0) || (metal_rough_texture >= 0 && metallic > 0.5); }
     // glTF's alphaMode MASK: the surface is there only where its alpha --
     // `alpha` times the texture's -- is at least alpha_cutoff; elsewhere
     // camera and shadow rays pass through it.
