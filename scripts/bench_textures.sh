@@ -5,6 +5,8 @@
 # file without them, 800x450, 2 threads, double and float, at frame 110
 # (the cart under the trellis):
 #   textured    the demo as it is;
+#   no_mipmaps  every texture read from its image alone, however far
+#               away (minFilter LINEAR), as before mipmaps;
 #   no_bevels   its floor without the normal texture;
 #   no_cutout   its trellis OPAQUE (its texture still drawn, no holes);
 #   untextured  no textures at all (the trellis a solid square, the floor
@@ -35,6 +37,15 @@ flat = json.loads(json.dumps(g))
 for m in flat["materials"]:
     m.pop("normalTexture", None)
 json.dump(flat, open(work + "/no_bevels.gltf", "w"))
+sharp = json.loads(json.dumps(g))
+sharp.setdefault("samplers", [])
+for t in sharp["textures"]:
+    if "sampler" not in t:
+        sharp["samplers"].append({})
+        t["sampler"] = len(sharp["samplers"]) - 1
+for s in sharp["samplers"]:
+    s["minFilter"] = 9729
+json.dump(sharp, open(work + "/no_mipmaps.gltf", "w"))
 for m in g["materials"]:
     if m.get("alphaMode") == "MASK":
         m["alphaMode"] = "OPAQUE"
@@ -44,7 +55,7 @@ for m in g["materials"]:
     m.pop("normalTexture", None)
 json.dump(g, open(work + "/untextured.gltf", "w"))
 PY
-variants="textured no_bevels no_cutout untextured"
+variants="textured no_mipmaps no_bevels no_cutout untextured"
 for precision in double float; do
   for v in $variants; do echo 1e9 > "$work/$v.$precision"; done
   for ((r = 0; r < rounds; r++)); do

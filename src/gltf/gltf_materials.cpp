@@ -107,9 +107,9 @@ public:
     }
 
     // The scene texture of glTF texture `index`, read as colour (srgb) or
-    // as data: its image (decoded by gltf_model.cpp) shared with every
-    // texture that shows it, and its sampler's wrap modes and magnification
-    // filter.
+    // as data: its image (decoded by gltf_model.cpp) and mipmaps shared
+    // with every texture that shows it, and its sampler's wrap modes and
+    // filters.
     int texture_of(int index, const std::string& name, Scene& s, bool srgb) {
         if (index < 0 || size_t(index) >= m_.textures.size()) fail(name + ": texture " + std::to_string(index) + " does not exist");
         if (const auto it = textures_.find({index, srgb}); it != textures_.end()) return it->second;
@@ -140,6 +140,14 @@ public:
             if (sm.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) out.filter = Filter::nearest;
             else if (sm.magFilter != -1 && sm.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR)
                 fail(what + ": magFilter " + std::to_string(sm.magFilter) + " is not glTF's (9728 or 9729)");
+            minify(sm.minFilter, what, out);
+        } else {
+            minify(-1, what, out);
+        }
+        if (out.mips != MipFilter::none) {
+            auto& chain = chains_[{t.source, srgb}];
+            if (!chain) chain = mip_chain(*image, srgb);
+            out.smaller = chain;
         }
         s.textures.push_back(std::move(out));
         return textures_[{index, srgb}] = int(s.textures.size()) - 1;
@@ -148,12 +156,37 @@ public:
     int unused_textures_ = 0;
 
 private:
+    // The minified texture's filters by glTF's minFilter: within a level
+    // (its first word) and between mipmap levels (its last); undefined
+    // (-1): trilinear, as glTF viewers choose.
+    void minify(int min_filter, const std::string& what, Texture& out) const {
+        switch (min_filter) {
+        case TINYGLTF_TEXTURE_FILTER_NEAREST: out.min_filter = Filter::nearest, out.mips = MipFilter::none; return;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR: out.min_filter = Filter::bilinear, out.mips = MipFilter::none; return;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+            out.min_filter = Filter::nearest, out.mips = MipFilter::nearest;
+            return;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
+            out.min_filter = Filter::bilinear, out.mips = MipFilter::nearest;
+            return;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
+            out.min_filter = Filter::nearest, out.mips = MipFilter::linear;
+            return;
+        case -1:
+        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR:
+            out.min_filter = Filter::bilinear, out.mips = MipFilter::linear;
+            return;
+        default: fail(what + ": minFilter " + std::to_string(min_filter) + " is not glTF's (9728, 9729 or 9984-9987)");
+        }
+    }
+
     [[noreturn]] void fail(const std::string& what) const { throw InputError(file_, what); }
 
     const tinygltf::Model& m_;
     const std::string& file_;
     std::map<std::pair<int, bool>, int> textures_;  // glTF texture, read as colour -> Scene::textures
     std::map<int, std::shared_ptr<const TextureImage>> images_;  // glTF image, decoded
+    std::map<std::pair<int, bool>, std::shared_ptr<const MipChain>> chains_;  // glTF image, read as colour
 };
 
 }  // namespace

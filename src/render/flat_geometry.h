@@ -102,9 +102,21 @@ struct TriangleUvs {
 // Where points lie on a triangle, for what its vertices carry: the
 // weights b1, b2 of v1 and v2 and, where its mesh has texture coordinates,
 // (u, v) there (FlatGeometry::point_on).
+// lod: log2 of each pixel's footprint there in (u, v) units, where a
+// texture may be read from its mipmaps (render/texture_footprint.h);
+// -infinity: a point.
 template <typename T>
 struct TrianglePoint {
     Lanes<T> b1, b2, u, v;
+    Lanes<T> lod = splat(-kInfinity<T>);
+};
+
+// A triangle's edges from v0 in space and in its texture coordinates, and
+// the determinant of the latter (twice its signed area in the image).
+template <typename T>
+struct UvEdges {
+    Vec3<T> e1, e2;
+    T du1, dv1, du2, dv2, det;
 };
 
 // A triangle's tangents at v0, v1 and v2 (a glTF TANGENT's xyz, or those
@@ -252,17 +264,30 @@ struct FlatGeometry {
     // its coordinates are mirrored (uvs not empty). False where its
     // coordinates do not span it (collinear in the image).
     bool tangent_of(int prim, Vec3<T>& du, T& w) const {
+        const UvEdges<T> c = uv_edges(prim);
+        if (!(c.det != 0) || !std::isfinite(c.det)) return false;
+        // dP/du = (dv2 e1 - dv1 e2) / det, dP/dv = (du1 e2 - du2 e1) / det.
+        const Vec3<T> along = c.dv2 * c.e1 - c.dv1 * c.e2, dv = c.du1 * c.e2 - c.du2 * c.e1;  // times det
+        du = (c.det > 0 ? T(1) : T(-1)) * along;
+        w = glm::dot(glm::cross(glm::cross(c.e1, c.e2), along), dv) > 0 ? T(-1) : T(1);  // the sign is det^2's
+        return glm::dot(du, du) > 0;
+    }
+
+    // How densely triangle `prim` maps its image (uvs not empty): its face
+    // normal e1 x e2, and sqrt(|det| |e1 x e2|) -- twice the root of its
+    // area in the image times its area in space, the factor that turns a
+    // width across it into one in (u, v) (render/texture_footprint.h).
+    void uv_density(int prim, Vec3<T>& normal, T& root) const {
+        const UvEdges<T> c = uv_edges(prim);
+        normal = glm::cross(c.e1, c.e2);
+        root = std::sqrt(std::abs(c.det) * glm::length(normal));
+    }
+
+    UvEdges<T> uv_edges(int prim) const {
         const Triangle<T>& t = triangles[size_t(ids.triangle_index(prim))];
         const TriangleUvs<T>& c = uvs[size_t(triangle_source[size_t(ids.triangle_index(prim))])];
-        const Vec3<T> e1 = t.v1 - t.v0, e2 = t.v2 - t.v0;
         const T du1 = c.u1 - c.u0, dv1 = c.v1 - c.v0, du2 = c.u2 - c.u0, dv2 = c.v2 - c.v0;
-        // dP/du = (dv2 e1 - dv1 e2) / det, dP/dv = (du1 e2 - du2 e1) / det.
-        const T det = du1 * dv2 - du2 * dv1;
-        if (!(det != 0) || !std::isfinite(det)) return false;
-        const Vec3<T> along = dv2 * e1 - dv1 * e2, dv = du1 * e2 - du2 * e1;  // dP/du, dP/dv times det
-        du = (det > 0 ? T(1) : T(-1)) * along;
-        w = glm::dot(glm::cross(glm::cross(e1, e2), along), dv) > 0 ? T(-1) : T(1);  // the sign is det^2's
-        return glm::dot(du, du) > 0;
+        return {t.v1 - t.v0, t.v2 - t.v0, du1, dv1, du2, dv2, du1 * dv2 - du2 * dv1};
     }
 
     // The tangents of triangle `prim` (tangents not empty).

@@ -89,6 +89,7 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
     }
 
     if (f.textured) f.textures = scene.textures;
+    for (const Texture& t : f.textures) f.minified |= t.minifies();
     if (!fx.diffuse && !fx.specular) return f;
     // One row of colour products per light, by material.
     auto add_terms = [&](std::vector<LightTerms<T>>& out, const dvec3& color, double strength) {

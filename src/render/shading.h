@@ -46,6 +46,7 @@
 #include "render/metal_rough.h"
 #include "render/normal_map.h"
 #include "render/stats.h"
+#include "render/texture_footprint.h"
 
 namespace fh {
 
@@ -56,7 +57,10 @@ public:
     static constexpr bool kSpecularTerm = (F & kSpecular) != 0;
     static constexpr bool kReflections = (F & kGlazing) != 0;
 
-    explicit Shader(const FlatScene<T>& scene) : scene_(scene), geometry_(*scene.geometry) {
+    // cone: the camera rays' (render/texture_footprint.h), for textures
+    // read from their mipmaps; none: every texture read as magnified.
+    explicit Shader(const FlatScene<T>& scene, PixelCone<T> cone = {})
+        : scene_(scene), geometry_(*scene.geometry), cone_(cone) {
         if constexpr (kInstances) instances_ = scene.instances.get();
     }
 
@@ -70,6 +74,7 @@ public:
         ColorLanes<T> colour = black;
         Lanes<T> weight = splat(T(1));
         LaneInts<T> layers{};  // see-through surfaces each ray has gone through (go_on)
+        Lanes<T> travelled = zero;  // each ray's path before its origin (its cone's distance)
         for (int depth = 0;; ++depth) {
             LaneInts<T> instance;  // each lane's instance, or kNoInstance (kInstances only)
             const HitLanes<T> h = hits(ray, active, depth == 0 ? first_hits : nullptr, instance);
@@ -80,8 +85,12 @@ public:
                 break;
             }
             SurfaceLanes surface;
-            if constexpr (kInstances) instanced_surfaces(ray, h, instance, hit, surface, local);
-            else surfaces(ray, h, hit, surface, local);
+            if constexpr (kInstances) {
+                instanced_surfaces(ray, h, instance, hit, travelled, surface, local);
+                if (scene_.minified) travelled += select(hit, h.t, zero);
+            } else {
+                surfaces(ray, h, hit, surface, local);
+            }
             add_lights(ray, surface, hit, local, counts);
             if constexpr (kInstances) {
                 if (scene_.blended) {
@@ -101,6 +110,13 @@ public:
             ray = {surface.origin, d - (T(2) * dot(d, surface.normal)) * surface.normal};
         }
         return colour;
+    }
+
+    // The same shader with another cone (an adaptive frame's refined pixels).
+    Shader with_cone(PixelCone<T> cone) const {
+        Shader s = *this;
+        s.cone_ = cone;
+        return s;
     }
 
     // One ray on its own (tests, debugging): a packet of one.
@@ -267,7 +283,8 @@ private:
     // primitive; an instance's primitive is projected in its mesh's space and
     // carried back to the world (normals by the inverse transpose).
     FH_HOT_INLINE void instanced_surfaces(const RayPacket<T>& ray, const HitLanes<T>& h, const LaneInts<T>& instance,
-                                          const LaneInts<T>& hit, SurfaceLanes& s, ColorLanes<T>& local) const {
+                                          const LaneInts<T>& hit, const Lanes<T>& travelled, SurfaceLanes& s,
+                                          ColorLanes<T>& local) const {
         const Lanes<T> zero = splat(T(0));
         const Vec3Lanes<T> p = ray.at(select(hit, h.t, zero));
         ColorLanes<T> ambient{zero, zero, zero};
@@ -297,6 +314,8 @@ private:
             // the mesh's space.
             TrianglePoint<T> at{};
             if (scene_.textured && (!mesh.uvs.empty() || !mesh.colors.empty())) at = mesh.point_on(prim, point);
+            if (scene_.minified && !mesh.uvs.empty())
+                at.lod = footprint_lod(mesh, prim, inst.to_object.vector(ray.direction), cone_.at(travelled + h.t));
             const MaterialShading<T>& m = scene_.shading[size_t(inst.material)];
             const bool bumpy = scene_.textured && m.normal_texture >= 0 && !mesh.uvs.empty();
             if (bumpy)
@@ -353,7 +372,7 @@ private:
         const Lanes<T> one = splat(T(1));
         ColorLanes<T> albedo{one, one, one};
         if (texel) {
-            const TexelLanes<T> c = scene_.textures[size_t(m.texture)].template sample<T>(at.u, at.v);
+            const TexelLanes<T> c = scene_.textures[size_t(m.texture)].template sample<T>(at.u, at.v, at.lod);
             albedo = {c.r, c.g, c.b};
         }
         if (!mesh.colors.empty()) {
@@ -364,12 +383,12 @@ private:
         ColorLanes<T> tinted{albedo.x * m.tinted_ambient.x, albedo.y * m.tinted_ambient.y,
                              albedo.z * m.tinted_ambient.z};
         if (occluded) {
-            const Lanes<T> r = scene_.textures[size_t(m.occlusion_texture)].template sample<T>(at.u, at.v).r;
+            const Lanes<T> r = scene_.textures[size_t(m.occlusion_texture)].template sample<T>(at.u, at.v, at.lod).r;
             const Lanes<T> factor = T(1) + m.occlusion_strength * (r - T(1));
             tinted = {tinted.x * factor, tinted.y * factor, tinted.z * factor};
         }
         if (glow) {
-            const TexelLanes<T> c = scene_.textures[size_t(m.emissive_texture)].template sample<T>(at.u, at.v);
+            const TexelLanes<T> c = scene_.textures[size_t(m.emissive_texture)].template sample<T>(at.u, at.v, at.lod);
             put(ambient, tinted + ColorLanes<T>{c.r * m.emissive.x, c.g * m.emissive.y, c.b * m.emissive.z}, lanes, first);
         } else {
             put(ambient, tinted + m.emissive, lanes, first);
@@ -509,27 +528,30 @@ private:
     // scenes without instances is the same object as before they existed.
     struct NoInstances {};
     [[no_unique_address]] std::conditional_t<kInstances, const InstanceSet<T>*, NoInstances> instances_;
+    PixelCone<T> cone_;
 };
 
 // Calls fn(shader) with the shader variant for the scene's effect plan and
 // whether it has instances.
 template <typename T, bool kInstances, typename Fn>
-decltype(auto) with_shader_of(const FlatScene<T>& scene, Fn&& fn) {
+decltype(auto) with_shader_of(const FlatScene<T>& scene, Fn&& fn, PixelCone<T> cone) {
     switch (shader_features(scene.plan)) {
-    case 0: return fn(Shader<T, 0, kInstances>(scene));
-    case 1: return fn(Shader<T, 1, kInstances>(scene));
-    case 2: return fn(Shader<T, 2, kInstances>(scene));
-    case 3: return fn(Shader<T, 3, kInstances>(scene));
-    case 4: return fn(Shader<T, 4, kInstances>(scene));
-    case 5: return fn(Shader<T, 5, kInstances>(scene));
-    case 6: return fn(Shader<T, 6, kInstances>(scene));
-    default: return fn(Shader<T, 7, kInstances>(scene));
+    case 0: return fn(Shader<T, 0, kInstances>(scene, cone));
+    case 1: return fn(Shader<T, 1, kInstances>(scene, cone));
+    case 2: return fn(Shader<T, 2, kInstances>(scene, cone));
+    case 3: return fn(Shader<T, 3, kInstances>(scene, cone));
+    case 4: return fn(Shader<T, 4, kInstances>(scene, cone));
+    case 5: return fn(Shader<T, 5, kInstances>(scene, cone));
+    case 6: return fn(Shader<T, 6, kInstances>(scene, cone));
+    default: return fn(Shader<T, 7, kInstances>(scene, cone));
     }
 }
+// cone: the camera rays' (render/texture_footprint.h); none: textures
+// read as magnified.
 template <typename T, typename Fn>
-decltype(auto) with_shader(const FlatScene<T>& scene, Fn&& fn) {
-    if (scene.instances) return with_shader_of<T, true>(scene, fn);
-    return with_shader_of<T, false>(scene, fn);
+decltype(auto) with_shader(const FlatScene<T>& scene, Fn&& fn, PixelCone<T> cone = {}) {
+    if (scene.instances) return with_shader_of<T, true>(scene, fn, cone);
+    return with_shader_of<T, false>(scene, fn, cone);
 }
 
 }  // namespace fh

@@ -237,12 +237,14 @@ FrameResult render_frame_as(const FlatScene<T>& flat, const Camera& camera, cons
             pixels_to_refine(result.image, settings.adaptive_threshold);
         result.refined_pixels = refine.size();
         const int chunks = int((refine.size() + kChunk - 1) / kChunk);
+        // Each of a refined pixel's samples stands for its share of the pixel.
+        const auto refining = shader.with_cone(PixelCone<T>::of(camera, settings.adaptive_samples));
         run(chunks, [&](int c, int worker) {
             const int n = std::min(kChunk, int(refine.size()) - c * kChunk);
-            render_pixels<T>(shader, camera_rays, refine.data() + c * kChunk, n,
+            render_pixels<T>(refining, camera_rays, refine.data() + c * kChunk, n,
                              settings.adaptive_samples, nullptr, result.image, states[size_t(worker)].counts);
         });
-    });
+    }, PixelCone<T>::of(camera, settings.samples_per_pixel));
     for (const WorkerState& w : states) result.counts += w.counts;
     result.render_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

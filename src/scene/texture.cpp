@@ -1,5 +1,7 @@
 #include "scene/texture.h"
 
+#include <algorithm>
+
 namespace fh {
 
 // Filled once before main: the table every texel read goes through.
@@ -11,5 +13,62 @@ const std::array<float, 256> kSrgbToLinear = [] {
     }
     return t;
 }();
+
+std::uint8_t linear_to_srgb_byte(double linear) {
+    const double c = std::clamp(linear, 0.0, 1.0);
+    const double encoded = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
+    return std::uint8_t(std::lround(255 * encoded));
+}
+
+namespace {
+
+// The texels of level n (along one axis) that texel i of the next level
+// down, of n' = max(1, n / 2) texels, averages: [first, end).
+struct Span {
+    int first, end;
+};
+Span span_of(int i, int n, int n_next) {
+    return {int(long(i) * n / n_next), int((long(i + 1) * n + n_next - 1) / n_next)};
+}
+
+}  // namespace
+
+std::shared_ptr<const MipChain> mip_chain(const TextureImage& image, bool srgb) {
+    auto chain = std::make_shared<MipChain>();
+    // The level above as linear values (rgba per texel): the image's bytes
+    // through the table, then each level's floats as computed, not its
+    // rounded bytes. No copy of the image: a float level below it needs as
+    // much memory as its bytes.
+    int w = image.width, h = image.height;
+    std::vector<float> above;
+    auto value = [&](size_t k) {
+        if (!above.empty()) return above[k];
+        const std::uint8_t byte = image.rgba[k];
+        return srgb && k % 4 != 3 ? kSrgbToLinear[byte] : float(byte) * (1.0f / 255);
+    };
+    while (w > 1 || h > 1) {
+        const int nw = std::max(1, w / 2), nh = std::max(1, h / 2);
+        std::vector<float> level(4 * size_t(nw) * size_t(nh));
+        for (int j = 0; j < nh; ++j) {
+            const Span rows = span_of(j, h, nh);
+            for (int i = 0; i < nw; ++i) {
+                const Span columns = span_of(i, w, nw);
+                double sum[4] = {0, 0, 0, 0};
+                for (int y = rows.first; y < rows.end; ++y)
+                    for (int x = columns.first; x < columns.end; ++x)
+                        for (int c = 0; c < 4; ++c) sum[c] += value(4 * (size_t(y) * size_t(w) + size_t(x)) + size_t(c));
+                const double n = double(rows.end - rows.first) * double(columns.end - columns.first);
+                for (int c = 0; c < 4; ++c) level[4 * (size_t(j) * size_t(nw) + size_t(i)) + size_t(c)] = float(sum[c] / n);
+            }
+        }
+        chain->levels.push_back({nw, nh, chain->rgba.size()});
+        for (size_t k = 0; k < level.size(); ++k)
+            chain->rgba.push_back(srgb && k % 4 != 3 ? linear_to_srgb_byte(level[k])
+                                                     : std::uint8_t(std::lround(255 * std::clamp(double(level[k]), 0.0, 1.0))));
+        above = std::move(level);
+        w = nw, h = nh;
+    }
+    return chain;
+}
 
 }  // namespace fh

@@ -8,8 +8,15 @@
 // them; a read returns linear colour (the spec's transfer function, inverted
 // by a 256-entry table) and alpha, in [0, 1]. Data texels (occlusion) are
 // linear throughout. Bilinear filtering blends the four nearest texel
-// centres in linear values. There are no mipmaps: a texture seen from far
-// away is read at one point per ray, as a pixel's sample (docs/gltf.md,
+// centres in linear values.
+//
+// Seen from far away, where a pixel covers many texels, a texture is read
+// from its mipmaps (glTF's minFilter): the image halved again and again
+// down to one texel, each level the box average of the one above in linear
+// values. Which level: lambda = log2 of the pixel's footprint in texels, as
+// a ray cone finds it (render/texture_footprint.h); LINEAR_MIPMAP_LINEAR
+// blends the two levels round lambda (trilinear). Where lambda <= 0 the
+// texture is magnified and read as without mipmaps (docs/gltf.md,
 // "Textures").
 #pragma once
 
@@ -25,6 +32,9 @@ namespace fh {
 
 enum class Wrap : std::uint8_t { repeat, mirrored_repeat, clamp_to_edge };
 enum class Filter : std::uint8_t { nearest, bilinear };
+// Between mipmap levels (glTF's *_MIPMAP_NEAREST, *_MIPMAP_LINEAR); none:
+// the image alone, however small it is seen.
+enum class MipFilter : std::uint8_t { none, nearest, linear };
 
 struct TextureImage {
     int width = 0, height = 0;
@@ -33,6 +43,24 @@ struct TextureImage {
 
 // sRGB byte -> linear value in [0, 1] (IEC 61966-2-1).
 extern const std::array<float, 256> kSrgbToLinear;
+// And back: the nearest sRGB byte of a linear value (clamped into [0, 1]).
+std::uint8_t linear_to_srgb_byte(double linear);
+
+// An image's mipmap levels below it: level k (from 1) is
+// max(1, width >> k) x max(1, height >> k) texels. Each texel is the mean,
+// in linear values, of the texels of the level above that its span covers
+// -- a 2 x 2 block, or 3 where an odd side does not halve evenly -- computed
+// from the level above's unrounded values and rounded to bytes once.
+struct MipChain {
+    struct Level {
+        int width, height;
+        size_t offset;  // of its first texel in rgba, in bytes
+    };
+    std::vector<Level> levels;  // levels 1, 2, ... down to 1 x 1
+    std::vector<std::uint8_t> rgba;
+};
+// srgb: colour texels (averaged as linear values); else data.
+std::shared_ptr<const MipChain> mip_chain(const TextureImage& image, bool srgb);
 
 // One texel index along an axis of n texels, for any whole i, by the wrap
 // mode: repeat tiles, mirrored_repeat tiles with every other copy flipped,
@@ -99,25 +127,99 @@ FH_HOT_INLINE void texel_pair(Lanes<T> x, int n, Wrap wrap, LaneInts<T>& i, Lane
 struct Texture {
     std::shared_ptr<const TextureImage> image;
     Wrap wrap_s = Wrap::repeat, wrap_t = Wrap::repeat;  // along u, along v
-    Filter filter = Filter::bilinear;
+    Filter filter = Filter::bilinear;      // magnified (glTF's magFilter)
+    Filter min_filter = Filter::bilinear;  // minified, within a level (minFilter)
+    MipFilter mips = MipFilter::none;      // minified, between levels (minFilter)
+    std::shared_ptr<const MipChain> smaller;  // mips != none: the levels below the image
     // Colour texels are sRGB-encoded (base colour, emissive); data texels
     // (occlusion) are read as they are, n / 255.
     bool srgb = true;
 
-    // Linear colour and alpha at each lane's (u, v). Coordinates turn into
-    // texels in T, all lanes at once; then each lane reads its texels.
+    // Whether a footprint can change what is read: mipmaps, or another
+    // filter for the minified.
+    bool minifies() const { return mips != MipFilter::none || min_filter != filter; }
+
+    // Linear colour and alpha at each lane's (u, v), read as magnified.
+    // Coordinates turn into texels in T, all lanes at once; then each lane
+    // reads its texels.
     template <typename T>
     FH_HOT_INLINE TexelLanes<T> sample(const Lanes<T>& u, const Lanes<T>& v) const {
-        const int w = image->width, h = image->height;
-        const Lanes<T> shift = splat(filter == Filter::bilinear ? T(0.5) : T(0));  // texel centres at i + 1/2
+        return sample_level<T>(image->rgba.data(), image->width, image->height, filter, u, v);
+    }
+
+    // The same where each lane's pixel covers a footprint of 2^lod in
+    // (u, v) units (render/texture_footprint.h; -infinity or NaN: a point,
+    // read as magnified): lambda = lod + log2 sqrt(width * height) picks
+    // the level.
+    template <typename T>
+    FH_HOT_INLINE TexelLanes<T> sample(const Lanes<T>& u, const Lanes<T>& v, const Lanes<T>& lod) const {
+        if (!minifies()) return sample<T>(u, v);
+        return sample_minified<T>(u, v, lod);
+    }
+
+    // One point (tests, cutouts): the packet formula in a packet of one.
+    std::array<float, 4> sample(double u, double v) const { return sample(u, v, -kInfinity<double>); }
+    std::array<float, 4> sample(double u, double v, double lod) const {
+        const TexelLanes<double> c = sample<double>(splat(u), splat(v), splat(lod));
+        return {float(c.r[0]), float(c.g[0]), float(c.b[0]), float(c.a[0])};
+    }
+
+private:
+    // Out of line: the level loop is needed only where a texture is seen
+    // from far away.
+    template <typename T>
+    __attribute__((noinline)) TexelLanes<T> sample_minified(const Lanes<T>& u, const Lanes<T>& v,
+                                                            const Lanes<T>& lod) const {
+        const Lanes<T> lambda = lod + T(0.5) * std::log2(T(image->width) * T(image->height));
+        const LaneInts<T> far = lambda > T(0);  // false for NaN
+        if (none(far)) return sample<T>(u, v);
+        const int last = mips == MipFilter::none ? 0 : int(smaller->levels.size());
+        // Each lane's level and its share of the next: lambda in [0, last].
+        const Lanes<T> l = max(splat(T(0)), min(splat(T(last)), select(far, lambda, splat(T(0)))));
+        Lanes<T> level = mips == MipFilter::nearest ? floor_lanes<T>(l + T(0.5)) : floor_lanes<T>(l);
+        level = min(level, splat(T(last)));
+        const Lanes<T> next = mips == MipFilter::linear ? l - level : splat(T(0));
+        const LaneInts<T> k = __builtin_convertvector(level, LaneInts<T>);
+        int lo = last, hi = 0;
+        for_each_lane(far, [&](int lane) {
+            lo = std::min(lo, int(k[lane]));
+            hi = std::max(hi, int(k[lane]) + (next[lane] > 0 ? 1 : 0));
+            return false;
+        });
+        const Lanes<T> zero = splat(T(0));
+        TexelLanes<T> sum{zero, zero, zero, zero};
+        for (int at = lo; at <= hi; ++at) {
+            const Lanes<T> share = select(far & (k == at), T(1) - next, zero) + select(far & (k + 1 == at), next, zero);
+            if (none(share > T(0))) continue;
+            const TexelLanes<T> c = at == 0 ? sample_level<T>(image->rgba.data(), image->width, image->height,
+                                                               min_filter, u, v)
+                                            : level_texels<T>(at, u, v);
+            sum = {sum.r + share * c.r, sum.g + share * c.g, sum.b + share * c.b, sum.a + share * c.a};
+        }
+        const TexelLanes<T> near = any(~far) ? sample<T>(u, v) : sum;
+        return {select(far, sum.r, near.r), select(far, sum.g, near.g), select(far, sum.b, near.b),
+                select(far, sum.a, near.a)};
+    }
+
+    template <typename T>
+    TexelLanes<T> level_texels(int at, const Lanes<T>& u, const Lanes<T>& v) const {
+        const MipChain::Level& m = smaller->levels[size_t(at - 1)];
+        return sample_level<T>(smaller->rgba.data() + m.offset, m.width, m.height, min_filter, u, v);
+    }
+
+    // Texels of a w x h level whose first texel is at `rgba`.
+    template <typename T>
+    FH_HOT_INLINE TexelLanes<T> sample_level(const std::uint8_t* rgba, int w, int h, Filter how, const Lanes<T>& u,
+                                             const Lanes<T>& v) const {
+        const Lanes<T> shift = splat(how == Filter::bilinear ? T(0.5) : T(0));  // texel centres at i + 1/2
         LaneInts<T> i0, i1, j0, j1;
         Lanes<T> fx, fy;
         texel_pair<T>(u * T(w) - shift, w, wrap_s, i0, i1, fx);
         texel_pair<T>(v * T(h) - shift, h, wrap_t, j0, j1, fy);
         const LaneInts<T> row0 = j0 * w, row1 = j1 * w;
-        if (filter == Filter::nearest) return read<T>(row0 + i0);
-        const TexelLanes<T> c00 = read<T>(row0 + i0), c10 = read<T>(row0 + i1);
-        const TexelLanes<T> c01 = read<T>(row1 + i0), c11 = read<T>(row1 + i1);
+        if (how == Filter::nearest) return read<T>(rgba, row0 + i0);
+        const TexelLanes<T> c00 = read<T>(rgba, row0 + i0), c10 = read<T>(rgba, row0 + i1);
+        const TexelLanes<T> c01 = read<T>(rgba, row1 + i0), c11 = read<T>(rgba, row1 + i1);
         auto blend = [&](const Lanes<T>& a, const Lanes<T>& b, const Lanes<T>& c, const Lanes<T>& d) {
             const Lanes<T> top = a + fx * (b - a), bottom = c + fx * (d - c);
             return top + fy * (bottom - top);
@@ -126,19 +228,11 @@ struct Texture {
                 blend(c00.b, c10.b, c01.b, c11.b), blend(c00.a, c10.a, c01.a, c11.a)};
     }
 
-    // One point (tests, cutouts): the packet formula in a packet of one.
-    std::array<float, 4> sample(double u, double v) const {
-        const TexelLanes<double> c = sample<double>(splat(u), splat(v));
-        return {float(c.r[0]), float(c.g[0]), float(c.b[0]), float(c.a[0])};
-    }
-
-private:
     // Texels `index` (row * width + column) of every lane, linear: all
     // lanes, which is faster than testing each (texel_pair keeps every
-    // index inside the image, used or not).
+    // index inside the level, used or not).
     template <typename T>
-    FH_HOT_INLINE TexelLanes<T> read(const LaneInts<T>& index) const {
-        const std::uint8_t* rgba = image->rgba.data();
+    FH_HOT_INLINE TexelLanes<T> read(const std::uint8_t* rgba, const LaneInts<T>& index) const {
         alignas(sizeof(Lanes<T>)) T r[kLanes<T>], g[kLanes<T>], b[kLanes<T>], a[kLanes<T>];
         if (srgb) {
             for (int k = 0; k < kLanes<T>; ++k) {

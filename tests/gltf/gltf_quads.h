@@ -197,9 +197,10 @@ inline std::string tex(int index) { return "{\"index\": " + std::to_string(index
 // glTF's sampler constants.
 constexpr int kRepeat = 10497, kMirrored = 33648, kClamp = 33071, kNearest = 9728, kLinear = 9729;
 
-inline std::string sampler_json(int wrap_s, int wrap_t, int mag = -1) {
+inline std::string sampler_json(int wrap_s, int wrap_t, int mag = -1, int min = -1) {
     return "{\"wrapS\": " + std::to_string(wrap_s) + ", \"wrapT\": " + std::to_string(wrap_t) +
-           (mag >= 0 ? ", \"magFilter\": " + std::to_string(mag) : "") + "}";
+           (mag >= 0 ? ", \"magFilter\": " + std::to_string(mag) : "") +
+           (min >= 0 ? ", \"minFilter\": " + std::to_string(min) : "") + "}";
 }
 
 // "materials", "textures" (each {"sampler": i, "source": i}, -1: left out),

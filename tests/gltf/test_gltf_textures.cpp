@@ -690,6 +690,8 @@ TEST(GltfTextureBadImages, SamplersAndTexturesThatAreNotGltfs) {
                    "texture 0: wrap mode 9729 is not glTF's (10497, 33648 or 33071)");
     expect_refused(textured_file({{0, 0}}, {red}, {sampler_json(kRepeat, kRepeat, 9987)}),
                    "texture 0: magFilter 9987 is not glTF's (9728 or 9729)");
+    expect_refused(textured_file({{0, 0}}, {red}, {sampler_json(kRepeat, kRepeat, -1, 9730)}),
+                   "texture 0: minFilter 9730 is not glTF's (9728, 9729 or 9984-9987)");
     expect_refused(textured_file({{-1, 5}}, {red}), "texture 0: it has no image firsthit can read");
     expect_refused(textured_file({{-1, -1}}, {red}), "texture 0: it has no image firsthit can read");
     expect_refused(textured_file({{3, 0}}, {red}, {sampler_json(kRepeat, kRepeat)}), "texture 0: sampler 3 does not exist");

@@ -173,18 +173,18 @@ std::string cube_stl_binary(float x3 = 0, bool replace = false) {
 // ---- comparing meshes ------------------------------------------------------------
 
 using Point = std::array<double, 3>;
-using Triangle = std::array<Point, 3>;
+using CornerTriple = std::array<Point, 3>;
 
 // The same triangle whichever corner it starts at (the winding is kept).
-Triangle canonical(Triangle t) {
+CornerTriple canonical(CornerTriple t) {
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     return t;
 }
 
-std::multiset<Triangle> triangles_of(const MeshData& m) {
-    std::multiset<Triangle> out;
+std::multiset<CornerTriple> triangles_of(const MeshData& m) {
+    std::multiset<CornerTriple> out;
     for (const auto& t : m.triangles) {
-        Triangle tri;
+        CornerTriple tri;
         for (int k = 0; k < 3; ++k) {
             const dvec3& p = m.positions.at(t[k]);
             tri[k] = {p.x, p.y, p.z};
@@ -194,10 +194,10 @@ std::multiset<Triangle> triangles_of(const MeshData& m) {
     return out;
 }
 
-std::multiset<Triangle> cube_triangles() {
-    std::multiset<Triangle> out;
+std::multiset<CornerTriple> cube_triangles() {
+    std::multiset<CornerTriple> out;
     for (const auto& t : kCubeTriangles) {
-        Triangle tri;
+        CornerTriple tri;
         for (int k = 0; k < 3; ++k) {
             const auto c = corner(t[k]);
             tri[k] = {double(c[0]), double(c[1]), double(c[2])};
@@ -329,7 +329,7 @@ TEST(MeshLoader, DegenerateTrianglesAreDroppedAndCounted) {
     EXPECT_EQ(m.degenerate_dropped, 3u);
     // Vertex 4 was used only by a dropped triangle.
     EXPECT_EQ(m.positions.size(), 3u);
-    const std::multiset<Triangle> expected = {canonical({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}),
+    const std::multiset<CornerTriple> expected = {canonical({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}),
                                               canonical({{{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}})};
     EXPECT_EQ(triangles_of(m), expected);
 }

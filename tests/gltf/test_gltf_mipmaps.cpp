@@ -1,0 +1,153 @@
+// glTF textures seen from far away (gltf/gltf_materials.cpp, scene/texture.h,
+// render/texture_footprint.h): each minFilter as the texture's filters,
+// mipmaps made once per image, and the pixels of a fine checkerboard that
+// a pixel covers 8 x 8 texels of -- worked out by hand.
+//
+// The quad x in [-1, 1], y in [-0.99, 1.01] at z = 0 carries a 64 x 64
+// checkerboard of single black and white texels (TEXCOORD_0 over the whole
+// quad). The 8 x 8 orthographic top view (half height 1) makes each pixel
+// 0.25 units wide: its ray cone is 0.25 / sqrt(2) across (kConeShare), and
+// on a triangle of the quad (legs 2 in space, 1 in the image: |e1 x e2| =
+// 4, |det_uv| = 1, the ray along its normal) the footprint is that times
+// sqrt(1 * 4) / 4, 2^-3.5 of the image: lod -3.5, lambda = -3.5 + log2 64
+// = 2.5. Levels 2 and 3 average 4 x 4 and 8 x 8 blocks, half black and
+// half white: linear 0.5, the sRGB byte 188, which reads as linear
+// 0.50289 -- as does every level below the image. Lit by ambient 0.2 and
+// a sun of 0.6 straight down: 255 * 0.8 * 0.50289 = 102.6, the pixel 103.
+//
+// Read without mipmaps (minFilter NEAREST), every pixel centre lands on a
+// white texel -- x = -0.825 + 0.25 i gives column (x + 1) * 32 = 5.6 + 8 i,
+// texel 5 + 8 i; y = 0.875 - 0.25 j gives row (1.01 - y) * 32 = 4.32 + 8 j,
+// texel 4 + 8 j; (5 + 4) is odd: white -- and the image is 204 throughout:
+// the aliasing mipmaps are for.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "gltf/gltf_quads.h"
+#include "images/png_writer.h"
+
+namespace fh {
+namespace gltf_mipmaps_test {
+
+using namespace gltf_test;
+
+constexpr int kMinNearest = 9728, kMinLinear = 9729;
+constexpr int kNearestMipmapNearest = 9984, kLinearMipmapNearest = 9985, kNearestMipmapLinear = 9986,
+              kLinearMipmapLinear = 9987;
+
+// A PNG of an n x n checkerboard of single texels, white where i + j is odd.
+std::string checker_png(int n) {
+    Image im(n, n);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c) im.rgb[3 * (size_t(j) * size_t(n) + size_t(i)) + size_t(c)] = (i + j) % 2 ? 255 : 0;
+    return as_string(encode_png(im));
+}
+
+// The quad with the checkerboard, through sampler `sampler` (empty: none).
+std::string checker_file(const std::string& sampler, double node_scale = 1) {
+    Quad q{-1, 1, -0.99, 1.01, 0, 0};
+    q.scale = node_scale;
+    return quads_file({q}, surfaces({material("[1, 1, 1, 1]", tex(0))}, {{sampler.empty() ? -1 : 0, 0}},
+                                    {image_json(checker_png(64))},
+                                    sampler.empty() ? std::vector<std::string>{} : std::vector<std::string>{sampler}));
+}
+
+const Rgb kWhite = {204, 204, 204};
+const Rgb kGrey = {103, 103, 103};
+
+TEST(GltfMipmaps, MinFiltersMapOntoLevelsAndFilters) {
+    struct Case {
+        int min;
+        Filter within;
+        MipFilter between;
+    };
+    const Case cases[] = {{-1, Filter::bilinear, MipFilter::linear},  // undefined: trilinear
+                          {kMinNearest, Filter::nearest, MipFilter::none},
+                          {kMinLinear, Filter::bilinear, MipFilter::none},
+                          {kNearestMipmapNearest, Filter::nearest, MipFilter::nearest},
+                          {kLinearMipmapNearest, Filter::bilinear, MipFilter::nearest},
+                          {kNearestMipmapLinear, Filter::nearest, MipFilter::linear},
+                          {kLinearMipmapLinear, Filter::bilinear, MipFilter::linear}};
+    for (const Case& c : cases) {
+        const GltfFile f = load(checker_file(sampler_json(kRepeat, kRepeat, kNearest, c.min)));
+        ASSERT_EQ(f.scene.textures.size(), 1u);
+        const Texture& t = f.scene.textures[0];
+        EXPECT_EQ(t.filter, Filter::nearest) << c.min;  // magFilter as before
+        EXPECT_EQ(t.min_filter, c.within) << c.min;
+        EXPECT_EQ(t.mips, c.between) << c.min;
+        ASSERT_EQ(t.smaller != nullptr, c.between != MipFilter::none) << c.min;
+        if (t.smaller) EXPECT_EQ(t.smaller->levels.size(), 6u) << c.min;  // 32, 16, 8, 4, 2, 1
+    }
+    // No sampler at all: glTF's "auto filtering", trilinear.
+    const GltfFile f = load(checker_file(""));
+    EXPECT_EQ(f.scene.textures[0].mips, MipFilter::linear);
+}
+
+TEST(GltfMipmaps, TexturesOfOneImageShareItsMipmaps) {
+    // Two textures of image 0 through two samplers, both read as colour.
+    const std::string json = quads_file(
+        {{-1, 0, -1, 1, 0, 0}, {0, 1, -1, 1, 0, 1}},
+        surfaces({material("[1, 1, 1, 1]", tex(0)), material("[1, 1, 1, 1]", tex(1))}, {{0, 0}, {1, 0}},
+                 {image_json(checker_png(8))},
+                 {sampler_json(kRepeat, kRepeat), sampler_json(kClamp, kClamp, -1, kNearestMipmapNearest)}));
+    const GltfFile f = load(json);
+    ASSERT_EQ(f.scene.textures.size(), 2u);
+    EXPECT_EQ(f.scene.textures[0].smaller, f.scene.textures[1].smaller);
+}
+
+TEST(GltfMipmaps, AFineCheckerboardSeenFromFarIsItsMean) {
+    for (Precision p : kPrecisions) {
+        for (int min : {-1, kLinearMipmapLinear, kNearestMipmapNearest, kLinearMipmapNearest, kNearestMipmapLinear})
+            expect_columns(top_view(lit(checker_file(sampler_json(kRepeat, kRepeat, -1, min))), p), 0, 8, kGrey,
+                           "minFilter " + std::to_string(min) + ", " + precision_name(p));
+        // Without mipmaps: one texel per pixel, all white here.
+        expect_columns(top_view(lit(checker_file(sampler_json(kRepeat, kRepeat, -1, kMinNearest))), p), 0, 8, kWhite,
+                       std::string("NEAREST, ") + precision_name(p));
+    }
+}
+
+TEST(GltfMipmaps, TheFootprintFollowsTheInstancesScale) {
+    // The quad's positions halved and its node scaled by 2: the same quad
+    // in the world, its triangles half as big in their own space -- the
+    // same footprint, the same grey.
+    for (Precision p : kPrecisions)
+        expect_columns(top_view(lit(checker_file(sampler_json(kRepeat, kRepeat), 2)), p), 0, 8, kGrey,
+                       precision_name(p));
+}
+
+TEST(GltfMipmaps, APerspectiveCameraReadsTheSameMean) {
+    // The eye 10 above the quad, the image plane at 9: the cone is
+    // 0.25 / 9 * 10 / sqrt(2) wide there, lambda = 2.65 -- levels 2 and 3,
+    // both the same grey. (Column 7 looks past the quad's edge: x = 1.02.)
+    for (Precision p : kPrecisions)
+        expect_columns(top_view(lit(checker_file(sampler_json(kRepeat, kRepeat))), p, 8, 8, 1, 0.05,
+                                Projection::perspective),
+                       0, 7, kGrey, precision_name(p));
+}
+
+TEST(GltfMipmaps, SupersamplingNarrowsTheCone) {
+    // 4 samples a pixel: each stands for half the pixel's width, lambda =
+    // 1.5 -- levels 1 and 2, again the mean 188 -- and the samples, all
+    // grey, average to the same 103. (With 16, lambda = 0.5 would blend
+    // in the image itself.) (Column 7's and row 7's
+    // pixels reach past the quad's edges: x up to 1.05, y down to -1.)
+    Camera c;
+    c.projection = Projection::orthographic;
+    c.width = c.height = 8;
+    c.view_point = {0.05, 0, 10};
+    c.look_at = {0, 0, -1};
+    c.up = {0, 1, 0};
+    c.half_height = 1;
+    RenderSettings settings;
+    settings.samples_per_pixel = 4;
+    const Image im = render_frame(lit(checker_file(sampler_json(kRepeat, kRepeat))), c, settings, nullptr).image;
+    for (int j = 0; j < 7; ++j)
+        for (int i = 0; i < 7; ++i) expect_pixel(im, i, j, kGrey, "4 samples");
+}
+
+}  // namespace gltf_mipmaps_test
+}  // namespace fh
