@@ -100,7 +100,7 @@ struct Quad {
     bool uvs = true;                 // TEXCOORD_0
     std::vector<float> uv1;          // TEXCOORD_1 (8 numbers), or none
     bool normals = false;            // NORMAL: up, at every vertex
-    std::vector<float> tangents;     // TANGENT (16 numbers, the file's axes), or none
+    std::vector<float> tangents;     // TANGENT (16 numbers, the file's axes; fewer: a bad count), or none
     bool degenerate_first = false;   // a zero-area triangle before its two
     bool down = false;               // wound facing down: seen from above, its back
     int layers = 1;                  // copies of it in the same primitive, each layer_step higher
@@ -153,7 +153,7 @@ inline std::string quads_body(Bin& bin, const std::vector<Quad>& quads, const st
             attributes += ", \"NORMAL\": " + std::to_string(a++);
         }
         if (!q.tangents.empty()) {
-            accessors += ", " + accessor(bin.f32(q.tangents), kFloat, 4, "VEC4");
+            accessors += ", " + accessor(bin.f32(q.tangents), kFloat, q.tangents.size() / 4, "VEC4");
             attributes += ", \"TANGENT\": " + std::to_string(a++);
         }
         if (!q.colors.empty()) {

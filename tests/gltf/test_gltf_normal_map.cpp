@@ -139,6 +139,15 @@ TEST(GltfNormalTexture, AMeshsTangentsReplaceTheTrianglesOwn) {
                        precision_name(p));
 }
 
+TEST(GltfNormalTexture, ATangentCountOtherThanThePositionsIsOneLine) {
+    Quad q{-1, 1, -1, 1, 0, 0};
+    q.normals = true;
+    q.tangents = {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1};  // three, for four vertices
+    const std::string json = quads_file({q}, surfaces({bumpy_material()}, {{0, 0}}, {image_json(rgba_png(2, 1, kTwoTilts))},
+                                                      {kNearestClampedSampler}));
+    expect_input_error([&] { load(json); }, "t.gltf", "mesh 0 primitive 0: TANGENT has 3 elements, POSITION 4");
+}
+
 TEST(GltfNormalTexture, NormalsAgainstTheWindingKeepTheirFrame) {
     // The quad wound facing down but its NORMALs up, seen from above (their
     // side): shading turns the normals to the face's side, and the tangent
