@@ -6,7 +6,7 @@
 # (the cart under the trellis):
 #   textured    the demo as it is;
 #   no_mipmaps  every texture read from its image alone, however far
-#               away (minFilter LINEAR), as before mipmaps;
+#               away (minFilter = its magFilter), as before mipmaps;
 #   no_bevels   its floor without the normal texture;
 #   no_cutout   its trellis OPAQUE (its texture still drawn, no holes);
 #   untextured  no textures at all (the trellis a solid square, the floor
@@ -44,7 +44,7 @@ for t in sharp["textures"]:
         sharp["samplers"].append({})
         t["sampler"] = len(sharp["samplers"]) - 1
 for s in sharp["samplers"]:
-    s["minFilter"] = 9729
+    s["minFilter"] = s.get("magFilter", 9729)
 json.dump(sharp, open(work + "/no_mipmaps.gltf", "w"))
 for m in g["materials"]:
     if m.get("alphaMode") == "MASK":
