@@ -273,15 +273,6 @@ struct FlatGeometry {
         return glm::dot(du, du) > 0;
     }
 
-    // How densely triangle `prim` maps its image (uvs not empty): its face
-    // normal e1 x e2, and sqrt(|det| |e1 x e2|) -- twice the root of its
-    // area in the image times its area in space, the factor that turns a
-    // width across it into one in (u, v) (render/texture_footprint.h).
-    void uv_density(int prim, Vec3<T>& normal, T& root) const {
-        const UvEdges<T> c = uv_edges(prim);
-        normal = glm::cross(c.e1, c.e2);
-        root = std::sqrt(std::abs(c.det) * glm::length(normal));
-    }
 
     UvEdges<T> uv_edges(int prim) const {
         const Triangle<T>& t = triangles[size_t(ids.triangle_index(prim))];

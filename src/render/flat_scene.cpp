@@ -89,7 +89,12 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
     }
 
     if (f.textured) f.textures = scene.textures;
-    for (const Texture& t : f.textures) f.minified |= t.minifies();
+    // Footprints are worked out only where a texture the shading reads may
+    // be seen from far away.
+    auto minifies = [&](int t) { return t >= 0 && scene.textures[size_t(t)].minifies(); };
+    for (const MaterialShading<T>& m : f.shading)
+        f.minified |= minifies(m.texture) || minifies(m.emissive_texture) || minifies(m.occlusion_texture) ||
+                      minifies(m.normal_texture) || minifies(m.metal_rough_texture);
     if (!fx.diffuse && !fx.specular) return f;
     // One row of colour products per light, by material.
     auto add_terms = [&](std::vector<LightTerms<T>>& out, const dvec3& color, double strength) {

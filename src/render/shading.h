@@ -315,7 +315,8 @@ private:
             TrianglePoint<T> at{};
             if (scene_.textured && (!mesh.uvs.empty() || !mesh.colors.empty())) at = mesh.point_on(prim, point);
             if (scene_.minified && !mesh.uvs.empty())
-                at.lod = footprint_lod(mesh, prim, inst.to_object.vector(ray.direction), cone_.at(travelled + h.t));
+                at.lod = footprint_lod(mesh, prim, inst, inst.to_object.vector(ray.direction), cone_.at(travelled + h.t),
+                                       lanes);
             const MaterialShading<T>& m = scene_.shading[size_t(inst.material)];
             const bool bumpy = scene_.textured && m.normal_texture >= 0 && !mesh.uvs.empty();
             if (bumpy)

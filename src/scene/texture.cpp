@@ -41,6 +41,12 @@ std::shared_ptr<const MipChain> mip_chain(const TextureImage& image, bool srgb) 
     // much memory as its bytes.
     int w = image.width, h = image.height;
     std::vector<float> above;
+    size_t bytes = 0;  // the levels' together, reserved at once: no doubling on the way
+    for (int lw = w, lh = h; lw > 1 || lh > 1;) {
+        lw = std::max(1, lw / 2), lh = std::max(1, lh / 2);
+        bytes += 4 * size_t(lw) * size_t(lh);
+    }
+    chain->rgba.reserve(bytes);
     auto value = [&](size_t k) {
         if (!above.empty()) return above[k];
         const std::uint8_t byte = image.rgba[k];
@@ -53,12 +59,21 @@ std::shared_ptr<const MipChain> mip_chain(const TextureImage& image, bool srgb) 
             const Span rows = span_of(j, h, nh);
             for (int i = 0; i < nw; ++i) {
                 const Span columns = span_of(i, w, nw);
-                double sum[4] = {0, 0, 0, 0};
+                // Colour weighted by alpha: a cutout's clear texels lend
+                // the mean none of their (unseen) colour.
+                double sum[4] = {0, 0, 0, 0}, weighted[3] = {0, 0, 0};
                 for (int y = rows.first; y < rows.end; ++y)
-                    for (int x = columns.first; x < columns.end; ++x)
-                        for (int c = 0; c < 4; ++c) sum[c] += value(4 * (size_t(y) * size_t(w) + size_t(x)) + size_t(c));
+                    for (int x = columns.first; x < columns.end; ++x) {
+                        const size_t at = 4 * (size_t(y) * size_t(w) + size_t(x));
+                        const double alpha = value(at + 3);
+                        for (int c = 0; c < 4; ++c) sum[c] += value(at + size_t(c));
+                        for (int c = 0; c < 3; ++c) weighted[c] += alpha * value(at + size_t(c));
+                    }
                 const double n = double(rows.end - rows.first) * double(columns.end - columns.first);
-                for (int c = 0; c < 4; ++c) level[4 * (size_t(j) * size_t(nw) + size_t(i)) + size_t(c)] = float(sum[c] / n);
+                float* out = &level[4 * (size_t(j) * size_t(nw) + size_t(i))];
+                for (int c = 0; c < 3; ++c)
+                    out[c] = float(srgb && sum[3] > 0 ? weighted[c] / sum[3] : sum[c] / n);
+                out[3] = float(sum[3] / n);
             }
         }
         chain->levels.push_back({nw, nh, chain->rgba.size()});

@@ -50,7 +50,10 @@ std::uint8_t linear_to_srgb_byte(double linear);
 // max(1, width >> k) x max(1, height >> k) texels. Each texel is the mean,
 // in linear values, of the texels of the level above that its span covers
 // -- a 2 x 2 block, or 3 where an odd side does not halve evenly -- computed
-// from the level above's unrounded values and rounded to bytes once.
+// from the level above's unrounded values and rounded to bytes once. A
+// colour image's colour is weighted by alpha (the mean of the texels that
+// show; all of them where none does), so that a cutout's clear texels do
+// not darken its edges from far away.
 struct MipChain {
     struct Level {
         int width, height;

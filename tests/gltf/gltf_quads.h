@@ -97,6 +97,7 @@ struct Quad {
     double x0, x1, y0, y1, z;
     int material = -1;
     double scale = 1;                // its node's scale (the positions are divided by it)
+    double stretch = 1;              // and its node's further scale along x (x divided by it too)
     bool uvs = true;                 // TEXCOORD_0
     std::vector<float> uv1;          // TEXCOORD_1 (8 numbers), or none
     bool normals = false;            // NORMAL: up, at every vertex
@@ -127,7 +128,9 @@ inline std::string quads_body(Bin& bin, const std::vector<Quad>& quads, const st
         if (q.degenerate_first) index = {0, 0, 1};
         for (int layer = 0; layer < q.layers; ++layer) {
             const double z = q.z + q.layer_step * layer;
-            auto at = [&](double x, double y) { return std::vector<float>{float(x / s), float(z / s), float(-y / s)}; };
+            auto at = [&](double x, double y) {
+                return std::vector<float>{float(x / (s * q.stretch)), float(z / s), float(-y / s)};
+            };
             for (const auto& v : {at(q.x0, q.y1), at(q.x1, q.y1), at(q.x1, q.y0), at(q.x0, q.y0)})
                 p.insert(p.end(), v.begin(), v.end());
             uv.insert(uv.end(), {0, 0, 1, 0, 1, 1, 0, 1});
@@ -171,7 +174,8 @@ inline std::string quads_body(Bin& bin, const std::vector<Quad>& quads, const st
                   "}, \"indices\": " + std::to_string(indices) +
                   (q.material >= 0 ? ", \"material\": " + std::to_string(q.material) : "") + "}]}";
         nodes += std::string(nodes.empty() ? "" : ", ") + "{\"mesh\": " + std::to_string(k) +
-                 (s != 1 ? ", \"scale\": [" + num(s) + ", " + num(s) + ", " + num(s) + "]" : "") + "}";
+                 (s != 1 || q.stretch != 1 ? ", \"scale\": [" + num(s * q.stretch) + ", " + num(s) + ", " + num(s) + "]" : "") +
+                 "}";
         scene += std::string(scene.empty() ? "" : ", ") + std::to_string(k);
     }
     return "\"scenes\": [{\"nodes\": [" + scene + "]}], \"nodes\": [" + nodes + "],\n\"meshes\": [" + meshes +

@@ -119,6 +119,48 @@ TEST(GltfMipmaps, TheFootprintFollowsTheInstancesScale) {
                        precision_name(p));
 }
 
+// A PNG of n x n texels in vertical stripes `width` texels wide, black
+// first.
+std::string stripes_png(int n, int width) {
+    Image im(n, n);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c) im.rgb[3 * (size_t(j) * size_t(n) + size_t(i)) + size_t(c)] = (i / width) % 2 ? 255 : 0;
+    return as_string(encode_png(im));
+}
+
+TEST(GltfMipmaps, LambdaPicksTheLevelsAndTheirShares) {
+    // 64 x 64 texels in stripes 8 wide: levels 0-3 keep them, 8 to 1
+    // texels wide; level 4 is grey. At lambda = 2.5 a pixel is half level 2
+    // and half level 3. Pixel column i (u * 64 = 5.6 + 8 i) lies in stripe
+    // i: at level 2 (16 texels, stripes 2 wide) u * 16 - 1/2 = 0.9 + 2 i
+    // blends texels 2 i and 2 i + 1, both stripe i's: pure; at level 3
+    // (stripes 1 wide) u * 8 - 1/2 = 0.2 + i blends texel i (0.8) with
+    // texel i + 1 (0.2). So the pixel is 0.9 of stripe i's colour and 0.1
+    // of the next one's, linear: white columns (odd i) 0.9 * 204 = 183.6 ->
+    // 184, black ones (even i) 0.1 * 204 = 20.4 -> 20.
+    //
+    // The same quad, its node stretched 2 along x (its positions' x
+    // halved): the same world, the same footprint, the same pixels -- a
+    // footprint taken in the mesh's own space with one scale would be
+    // sqrt(2) too wide (lambda 3: 0.8 and 0.2, 163 and 41).
+    for (double stretch : {1.0, 2.0, 0.25}) {
+        Quad q{-1, 1, -0.99, 1.01, 0, 0};
+        q.stretch = stretch;
+        const std::string json = quads_file(
+            {q}, surfaces({material("[1, 1, 1, 1]", tex(0))}, {{0, 0}}, {image_json(stripes_png(64, 8))},
+                          {sampler_json(kRepeat, kRepeat)}));
+        for (Precision p : kPrecisions) {
+            const Image im = top_view(lit(json), p);
+            const std::string what = "stretch " + num(stretch) + ", " + precision_name(p);
+            for (int i = 0; i < 8; ++i) {
+                const int v = i % 2 ? 184 : 20;
+                for (int j = 0; j < 8; ++j) expect_pixel(im, i, j, {v, v, v}, what);
+            }
+        }
+    }
+}
+
 TEST(GltfMipmaps, APerspectiveCameraReadsTheSameMean) {
     // The eye 10 above the quad, the image plane at 9: the cone is
     // 0.25 / 9 * 10 / sqrt(2) wide there, lambda = 2.65 -- levels 2 and 3,

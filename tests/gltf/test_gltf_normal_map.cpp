@@ -276,11 +276,13 @@ TEST(GltfNormalTexture, NormalsBelowTheSurfaceAndFlatCoordinatesStayFinite) {
 
 TEST(GltfNormalTexture, ItIsTracedOnlyWhereALightOrAMirrorShowsIt) {
     // Ambient light alone: the turned normal changes no pixel, so the
-    // effect plan leaves it out (the material is not even textured).
+    // effect plan leaves it out (the material is not even textured), and
+    // no hit's footprint is worked out for its mipmaps.
     const Scene s = lit(quads_file({{-1, 1, -1, 1, 0, 0}}, surfaces({bumpy_material()}, {{0, 0}},
                                                                       {image_json(rgba_png(2, 1, kTwoTilts))},
                                                                       {kNearestClampedSampler})));
     expect_read_only_when_lit(s, &MaterialShading<double>::normal_texture, &FlatScene<double>::textured, 0);
+    expect_read_only_when_lit(s, &MaterialShading<double>::normal_texture, &FlatScene<double>::minified, 0);
 }
 
 }  // namespace

@@ -48,27 +48,52 @@ TEST(Mipmaps, LinearToSrgbByteInvertsTheTable) {
 }
 
 TEST(Mipmaps, LevelsHalveColourInLinearValuesAndAlphaAsItIs) {
-    // 4 x 2: colours [0 255 255 255 / 0 255 0 0], alpha 255 at (0, 0) only.
-    const auto im = grey_image(4, 2, {0, 255, 255, 255, 0, 255, 0, 0}, {255, 0, 0, 0, 0, 0, 0, 0});
+    // 4 x 2, opaque: colours [0 255 255 255 / 0 255 0 0].
+    const auto im = grey_image(4, 2, {0, 255, 255, 255, 0, 255, 0, 0});
     const auto m = mip_chain(*im, true);
     ASSERT_EQ(m->levels.size(), 2u);
     EXPECT_EQ(m->levels[0].width, 2);
     EXPECT_EQ(m->levels[0].height, 1);
     EXPECT_EQ(m->levels[1].width, 1);
     EXPECT_EQ(m->levels[1].height, 1);
+    EXPECT_EQ(m->levels[1].offset, 8u);  // after level 1's two texels
     // Level 1: blocks {0, 255, 0, 255} and {255, 255, 0, 0}, each linear 0.5.
     for (int c = 0; c < 3; ++c) {
         EXPECT_EQ(texel(*m, 1, 0, 0, c), 188);
         EXPECT_EQ(texel(*m, 1, 1, 0, c), 188);
         EXPECT_EQ(texel(*m, 2, 0, 0, c), 188);
     }
-    EXPECT_EQ(texel(*m, 1, 0, 0, 3), 64);  // 255 / 4 = 63.75
-    EXPECT_EQ(texel(*m, 1, 1, 0, 3), 0);
-    EXPECT_EQ(texel(*m, 2, 0, 0, 3), 32);  // 255 / 8 = 31.875
+    EXPECT_EQ(texel(*m, 1, 0, 0, 3), 255);
     // As data, the same bytes average as they are: 127.5 -> 128.
     const auto d = mip_chain(*im, false);
     EXPECT_EQ(texel(*d, 1, 0, 0), 128);
     EXPECT_EQ(texel(*d, 2, 0, 0), 128);
+}
+
+TEST(Mipmaps, ColourIsWeightedByAlphaAndAlphaAveraged) {
+    // 4 x 1: red opaque, blue clear, white opaque, black at alpha 51.
+    TextureImage im{4, 1, {255, 0, 0, 255, 0, 0, 255, 0, 255, 255, 255, 255, 0, 0, 0, 51}};
+    const auto m = mip_chain(im, true);
+    // Texel 0: red alone (the clear blue lends nothing), alpha 127.5 -> 128.
+    EXPECT_EQ(texel(*m, 1, 0, 0, 0), 255);
+    EXPECT_EQ(texel(*m, 1, 0, 0, 2), 0);
+    EXPECT_EQ(texel(*m, 1, 0, 0, 3), 128);
+    // Texel 1: white 1.0 at weight 1, black at 0.2: linear 1 / 1.2 =
+    // 0.8333 -> sRGB 235 (1.055 * 0.8333^(1/2.4) - 0.055 = 0.92282, * 255 =
+    // 235.32); alpha (255 + 51) / 2 = 153.
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(texel(*m, 1, 1, 0, c), 235);
+    EXPECT_EQ(texel(*m, 1, 1, 0, 3), 153);
+    // Level 2 from level 1's unrounded values, weights 0.5 and 0.6: red
+    // (0.5 * 1 + 0.6 * 0.8333) / 1.1 = 0.9091 linear (sRGB 0.95893 * 255 =
+    // 244.53 -> 245), green 0.6 * 0.8333 / 1.1 = 0.4545 (0.70459 * 255 =
+    // 179.67 -> 180); alpha (0.5 + 0.6) / 2 = 0.55 -> 140.25 -> 140.
+    EXPECT_EQ(texel(*m, 2, 0, 0, 0), 245);
+    EXPECT_EQ(texel(*m, 2, 0, 0, 1), 180);
+    EXPECT_EQ(texel(*m, 2, 0, 0, 3), 140);
+    // All clear: the plain mean. As data: always the plain mean.
+    TextureImage clear{2, 1, {255, 0, 0, 0, 0, 0, 255, 0}};
+    EXPECT_EQ(texel(*mip_chain(clear, true), 1, 0, 0, 0), 188);
+    EXPECT_EQ(texel(*mip_chain(im, false), 1, 0, 0, 2), 128);
 }
 
 TEST(Mipmaps, EachLevelComesFromTheUnroundedOneAbove) {
