@@ -171,6 +171,31 @@ TEST(GltfMipmaps, APerspectiveCameraReadsTheSameMean) {
                        0, 7, kGrey, precision_name(p));
 }
 
+TEST(GltfMipmaps, TheConeGoesOnPastAClearPane) {
+    // A pane of alpha 0 (BLEND) at z = 5, between the eye (z = 10) and the
+    // striped floor: the rays go on past it, their cones counting the whole
+    // path -- the floor's pixels as without the pane. Were the cone to
+    // start again at the pane, its width at the floor would halve and
+    // lambda drop by one (levels 1 and 2, stripes no longer blended).
+    Quad floor{-1, 1, -0.99, 1.01, 0, 0};
+    const Quad pane{-3, 3, -3, 3, 5, 1};
+    auto file = [&](bool with_pane) {
+        std::vector<Quad> quads = {floor};
+        if (with_pane) quads.push_back(pane);
+        return quads_file(quads, surfaces({material("[1, 1, 1, 1]", tex(0)),
+                                           material("[1, 1, 1, 0]", "", ", \"alphaMode\": \"BLEND\"")},
+                                          {{0, 0}}, {image_json(stripes_png(64, 8))}, {sampler_json(kRepeat, kRepeat)}));
+    };
+    for (Precision p : kPrecisions) {
+        const Image without = top_view(lit(file(false)), p, 8, 8, 1, 0.05, Projection::perspective);
+        const Image with = top_view(lit(file(true)), p, 8, 8, 1, 0.05, Projection::perspective);
+        for (int j = 0; j < 8; ++j)
+            for (int i = 0; i < 7; ++i) expect_pixel(with, i, j, pixel(without, i, j), precision_name(p));
+        // (The stripes show: not one grey.)
+        EXPECT_GT(pixel(without, 1, 4)[0] - pixel(without, 0, 4)[0], 100) << precision_name(p);
+    }
+}
+
 TEST(GltfMipmaps, SupersamplingNarrowsTheCone) {
     // 4 samples a pixel: each stands for half the pixel's width, lambda =
     // 1.5 -- levels 1 and 2, again the mean 188 -- and the samples, all
