@@ -261,9 +261,8 @@ inline Scene lit(const std::string& json, const Lighting& l = {}) {
 // centre off the quads' edges and diagonals.
 // Perspective: the eye at (cx, 0, 10), the image plane at distance 9, so
 // that the plane z = 1 is seen as the orthographic camera sees it.
-// counts: where to put the frame's ray counts, if anywhere.
-inline Image top_view(const Scene& s, Precision precision, int w = 8, int h = 8, double half_height = 1, double cx = 0.05,
-               Projection projection = Projection::orthographic, RayCounts* counts = nullptr) {
+inline Camera top_camera(int w = 8, int h = 8, double half_height = 1, double cx = 0.05,
+                         Projection projection = Projection::orthographic) {
     Camera c;
     c.projection = projection;
     c.projection_distance = 9;
@@ -273,9 +272,16 @@ inline Image top_view(const Scene& s, Precision precision, int w = 8, int h = 8,
     c.look_at = {0, 0, -1};
     c.up = {0, 1, 0};
     c.half_height = half_height;
+    return c;
+}
+
+// What top_camera sees of s. counts: where to put the frame's ray counts,
+// if anywhere.
+inline Image top_view(const Scene& s, Precision precision, int w = 8, int h = 8, double half_height = 1, double cx = 0.05,
+               Projection projection = Projection::orthographic, RayCounts* counts = nullptr) {
     RenderSettings settings;
     settings.precision = precision;
-    const FrameResult r = render_frame(s, c, settings, nullptr);
+    const FrameResult r = render_frame(s, top_camera(w, h, half_height, cx, projection), settings, nullptr);
     EXPECT_EQ(r.counts.nonfinite_samples, 0u) << precision_name(precision);
     if (counts) *counts = r.counts;
     return r.image;

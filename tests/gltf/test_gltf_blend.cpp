@@ -26,16 +26,9 @@ std::string blend(const std::string& color, const std::string& texture = "") {
 
 // The render's ray counts, as top_view renders it.
 RayCounts counts_of(const Scene& s, Precision precision) {
-    Camera c;
-    c.projection = Projection::orthographic;
-    c.width = c.height = 8;
-    c.view_point = {0.05, 0, 10};
-    c.look_at = {0, 0, -1};
-    c.up = {0, 1, 0};
-    c.half_height = 1;
     RenderSettings settings;
     settings.precision = precision;
-    return render_frame(s, c, settings, nullptr).counts;
+    return render_frame(s, top_camera(), settings, nullptr).counts;
 }
 
 TEST(GltfBlend, ReadAsSeeThroughWithTheFactorsAlphaAndNoWarning) {

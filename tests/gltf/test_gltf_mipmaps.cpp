@@ -199,19 +199,12 @@ TEST(GltfMipmaps, TheConeGoesOnPastAClearPane) {
 TEST(GltfMipmaps, SupersamplingNarrowsTheCone) {
     // 4 samples a pixel: each stands for half the pixel's width, lambda =
     // 1.5 -- levels 1 and 2, again the mean 188 -- and the samples, all
-    // grey, average to the same 103. (With 16, lambda = 0.5 would blend
-    // in the image itself.) (Column 7's and row 7's
-    // pixels reach past the quad's edges: x up to 1.05, y down to -1.)
-    Camera c;
-    c.projection = Projection::orthographic;
-    c.width = c.height = 8;
-    c.view_point = {0.05, 0, 10};
-    c.look_at = {0, 0, -1};
-    c.up = {0, 1, 0};
-    c.half_height = 1;
+    // grey, average to the same 103. (With 16, lambda = 0.5 would blend in
+    // the image itself. Column 7's and row 7's pixels reach past the
+    // quad's edges: x up to 1.05, y down to -1.)
     RenderSettings settings;
     settings.samples_per_pixel = 4;
-    const Image im = render_frame(lit(checker_file(sampler_json(kRepeat, kRepeat))), c, settings, nullptr).image;
+    const Image im = render_frame(lit(checker_file(sampler_json(kRepeat, kRepeat))), top_camera(), settings, nullptr).image;
     for (int j = 0; j < 7; ++j)
         for (int i = 0; i < 7; ++i) expect_pixel(im, i, j, kGrey, "4 samples");
 }
