@@ -209,5 +209,28 @@ TEST(GltfMipmaps, SupersamplingNarrowsTheCone) {
         for (int i = 0; i < 7; ++i) expect_pixel(im, i, j, kGrey, "4 samples");
 }
 
+TEST(GltfMipmaps, RefinedPixelsNarrowTheConeAsUniformSamplesDo) {
+    // Adaptive anti-aliasing gives the stripes' pixels (each 164 from its
+    // neighbours) 4 stratified samples instead of 1: each stands for half
+    // the pixel, as in a frame of 4 samples a pixel -- the same pixels. A
+    // refined pixel's cone left a whole pixel wide would read levels 2
+    // and 3 instead of 1 and 2.
+    const Scene s = lit(quads_file({{-1, 1, -0.99, 1.01, 0, 0}},
+                                   surfaces({material("[1, 1, 1, 1]", tex(0))}, {{0, 0}},
+                                            {image_json(stripes_png(64, 8))}, {sampler_json(kRepeat, kRepeat)})));
+    for (Precision p : kPrecisions) {
+        RenderSettings uniform, adaptive;
+        uniform.precision = adaptive.precision = p;
+        uniform.samples_per_pixel = 4;
+        adaptive.adaptive = true;
+        adaptive.adaptive_samples = 4;
+        const FrameResult a = render_frame(s, top_camera(), adaptive, nullptr);
+        const Image u = render_frame(s, top_camera(), uniform, nullptr).image;
+        EXPECT_EQ(a.refined_pixels, 64u) << precision_name(p);
+        for (int j = 0; j < 7; ++j)
+            for (int i = 0; i < 8; ++i) expect_pixel(a.image, i, j, pixel(u, i, j), precision_name(p));
+    }
+}
+
 }  // namespace gltf_mipmaps_test
 }  // namespace fh
