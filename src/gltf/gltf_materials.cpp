@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 #include "gltf/gltf_texture_coords.h"
@@ -61,7 +62,10 @@ public:
     void add_surface_of(const tinygltf::Material& mat, const std::string& name, Scene& s) {
         Material<double>& out = s.materials.back();
         const auto& pbr = mat.pbrMetallicRoughness;
-        if (pbr.baseColorTexture.index >= 0) out.texture = texture_of(pbr.baseColorTexture.index, name, s, true);
+        // (Its alpha hides texels only where the surface is MASKed or BLENDed.)
+        const bool see_through = mat.alphaMode == "MASK" || mat.alphaMode == "BLEND";
+        if (pbr.baseColorTexture.index >= 0)
+            out.texture = texture_of(pbr.baseColorTexture.index, name, s, true, see_through);
         // The coordinates are compared only where the material has an
         // emissive, occlusion, normal or metallic-roughness texture; then a
         // bad transform of any of its textures is reported with the
@@ -107,12 +111,14 @@ public:
     }
 
     // The scene texture of glTF texture `index`, read as colour (srgb) or
-    // as data: its image (decoded by gltf_model.cpp) and mipmaps shared
-    // with every texture that shows it, and its sampler's wrap modes and
-    // filters.
-    int texture_of(int index, const std::string& name, Scene& s, bool srgb) {
+    // as data, its alpha hiding texels or not (see_through: its mipmaps
+    // weigh colour by alpha): its image (decoded by gltf_model.cpp) and
+    // mipmaps shared with every texture that shows it, and its sampler's
+    // wrap modes and filters.
+    int texture_of(int index, const std::string& name, Scene& s, bool srgb, bool see_through = false) {
         if (index < 0 || size_t(index) >= m_.textures.size()) fail(name + ": texture " + std::to_string(index) + " does not exist");
-        if (const auto it = textures_.find({index, srgb}); it != textures_.end()) return it->second;
+        const std::tuple<int, bool, bool> key{index, srgb, see_through};
+        if (const auto it = textures_.find(key); it != textures_.end()) return it->second;
         const tinygltf::Texture& t = m_.textures[size_t(index)];
         const std::string what = "texture " + std::to_string(index);
         if (t.source < 0 || size_t(t.source) >= m_.images.size()) fail(what + ": it has no image firsthit can read");
@@ -145,12 +151,12 @@ public:
             minify(-1, what, out);
         }
         if (out.mips != MipFilter::none) {
-            auto& chain = chains_[{t.source, srgb}];
-            if (!chain) chain = mip_chain(*image, srgb);
+            auto& chain = chains_[{t.source, srgb, see_through}];
+            if (!chain) chain = mip_chain(*image, srgb, see_through);
             out.smaller = chain;
         }
         s.textures.push_back(std::move(out));
-        return textures_[{index, srgb}] = int(s.textures.size()) - 1;
+        return textures_[key] = int(s.textures.size()) - 1;
     }
 
     int unused_textures_ = 0;
@@ -184,9 +190,9 @@ private:
 
     const tinygltf::Model& m_;
     const std::string& file_;
-    std::map<std::pair<int, bool>, int> textures_;  // glTF texture, read as colour -> Scene::textures
+    std::map<std::tuple<int, bool, bool>, int> textures_;  // glTF texture, as colour, see-through -> Scene::textures
     std::map<int, std::shared_ptr<const TextureImage>> images_;  // glTF image, decoded
-    std::map<std::pair<int, bool>, std::shared_ptr<const MipChain>> chains_;  // glTF image, read as colour
+    std::map<std::tuple<int, bool, bool>, std::shared_ptr<const MipChain>> chains_;  // glTF image, as colour, see-through
 };
 
 }  // namespace

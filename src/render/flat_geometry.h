@@ -273,7 +273,7 @@ struct FlatGeometry {
         return glm::dot(du, du) > 0;
     }
 
-
+    // Triangle `prim`'s edges and coordinate differences (uvs not empty).
     UvEdges<T> uv_edges(int prim) const {
         const Triangle<T>& t = triangles[size_t(ids.triangle_index(prim))];
         const TriangleUvs<T>& c = uvs[size_t(triangle_source[size_t(ids.triangle_index(prim))])];

@@ -33,7 +33,7 @@ Span span_of(int i, int n, int n_next) {
 
 }  // namespace
 
-std::shared_ptr<const MipChain> mip_chain(const TextureImage& image, bool srgb) {
+std::shared_ptr<const MipChain> mip_chain(const TextureImage& image, bool srgb, bool alpha_weighted) {
     auto chain = std::make_shared<MipChain>();
     // The level above as linear values (rgba per texel): the image's bytes
     // through the table, then each level's floats as computed, not its
@@ -59,8 +59,8 @@ std::shared_ptr<const MipChain> mip_chain(const TextureImage& image, bool srgb) 
             const Span rows = span_of(j, h, nh);
             for (int i = 0; i < nw; ++i) {
                 const Span columns = span_of(i, w, nw);
-                // Colour weighted by alpha: a cutout's clear texels lend
-                // the mean none of their (unseen) colour.
+                // Colour weighted by alpha where alpha hides texels: a
+                // cutout's clear texels lend the mean none of their colour.
                 double sum[4] = {0, 0, 0, 0}, weighted[3] = {0, 0, 0};
                 for (int y = rows.first; y < rows.end; ++y)
                     for (int x = columns.first; x < columns.end; ++x) {
@@ -72,7 +72,7 @@ std::shared_ptr<const MipChain> mip_chain(const TextureImage& image, bool srgb) 
                 const double n = double(rows.end - rows.first) * double(columns.end - columns.first);
                 float* out = &level[4 * (size_t(j) * size_t(nw) + size_t(i))];
                 for (int c = 0; c < 3; ++c)
-                    out[c] = float(srgb && sum[3] > 0 ? weighted[c] / sum[3] : sum[c] / n);
+                    out[c] = float(alpha_weighted && sum[3] > 0 ? weighted[c] / sum[3] : sum[c] / n);
                 out[3] = float(sum[3] / n);
             }
         }

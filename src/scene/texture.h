@@ -50,10 +50,12 @@ std::uint8_t linear_to_srgb_byte(double linear);
 // max(1, width >> k) x max(1, height >> k) texels. Each texel is the mean,
 // in linear values, of the texels of the level above that its span covers
 // -- a 2 x 2 block, or 3 where an odd side does not halve evenly -- computed
-// from the level above's unrounded values and rounded to bytes once. A
-// colour image's colour is weighted by alpha (the mean of the texels that
-// show; all of them where none does), so that a cutout's clear texels do
-// not darken its edges from far away.
+// from the level above's unrounded values and rounded to bytes once.
+// alpha_weighted (a MASK or BLEND surface's base colour, whose alpha hides
+// texels): colour is weighted by alpha -- the mean of the texels that show,
+// all of them where none does -- so that a cutout's clear texels do not
+// darken its edges from far away. Elsewhere glTF ignores alpha, and so does
+// the mean.
 struct MipChain {
     struct Level {
         int width, height;
@@ -63,7 +65,7 @@ struct MipChain {
     std::vector<std::uint8_t> rgba;
 };
 // srgb: colour texels (averaged as linear values); else data.
-std::shared_ptr<const MipChain> mip_chain(const TextureImage& image, bool srgb);
+std::shared_ptr<const MipChain> mip_chain(const TextureImage& image, bool srgb, bool alpha_weighted = false);
 
 // One texel index along an axis of n texels, for any whole i, by the wrap
 // mode: repeat tiles, mirrored_repeat tiles with every other copy flipped,

@@ -99,6 +99,26 @@ TEST(GltfMipmaps, TexturesOfOneImageShareItsMipmaps) {
     EXPECT_EQ(f.scene.textures[0].smaller, f.scene.textures[1].smaller);
 }
 
+TEST(GltfMipmaps, OnlySeeThroughBaseColoursWeighColourByAlpha) {
+    // One glTF texture, red opaque beside blue clear, on an OPAQUE and a
+    // MASKed material. Only the MASKed surface's mipmaps leave the clear
+    // blue out (level 1: red 255); the OPAQUE one, whose alpha glTF
+    // ignores, shows both up close and their mean far away (188, 0, 188).
+    const std::string json = quads_file(
+        {{-1, 0, -1, 1, 0, 0}, {0, 1, -1, 1, 0, 1}},
+        surfaces({material("[1, 1, 1, 1]", tex(0)), material("[1, 1, 1, 1]", tex(0), ", \"alphaMode\": \"MASK\"")},
+                 {{-1, 0}}, {image_json(rgba_png(2, 1, {{255, 0, 0, 255}, {0, 0, 255, 0}}))}));
+    const GltfFile f = load(json);
+    const Scene& s = f.scene;
+    ASSERT_EQ(s.textures.size(), 2u);
+    const MipChain& opaque = *s.textures[size_t(s.materials[0].texture)].smaller;
+    const MipChain& masked = *s.textures[size_t(s.materials[1].texture)].smaller;
+    EXPECT_EQ(opaque.rgba[0], 188);
+    EXPECT_EQ(opaque.rgba[2], 188);
+    EXPECT_EQ(masked.rgba[0], 255);
+    EXPECT_EQ(masked.rgba[2], 0);
+}
+
 TEST(GltfMipmaps, AFineCheckerboardSeenFromFarIsItsMean) {
     for (Precision p : kPrecisions) {
         for (int min : {-1, kLinearMipmapLinear, kNearestMipmapNearest, kLinearMipmapNearest, kNearestMipmapLinear})

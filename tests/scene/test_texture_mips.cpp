@@ -47,7 +47,7 @@ TEST(Mipmaps, LinearToSrgbByteInvertsTheTable) {
     EXPECT_EQ(linear_to_srgb_byte(7), 255);
 }
 
-TEST(Mipmaps, LevelsHalveColourInLinearValuesAndAlphaAsItIs) {
+TEST(Mipmaps, LevelsHalveColourInLinearValues) {
     // 4 x 2, opaque: colours [0 255 255 255 / 0 255 0 0].
     const auto im = grey_image(4, 2, {0, 255, 255, 255, 0, 255, 0, 0});
     const auto m = mip_chain(*im, true);
@@ -70,10 +70,11 @@ TEST(Mipmaps, LevelsHalveColourInLinearValuesAndAlphaAsItIs) {
     EXPECT_EQ(texel(*d, 2, 0, 0), 128);
 }
 
-TEST(Mipmaps, ColourIsWeightedByAlphaAndAlphaAveraged) {
-    // 4 x 1: red opaque, blue clear, white opaque, black at alpha 51.
+TEST(Mipmaps, ColourIsWeightedByAlphaWhereAlphaHidesTexels) {
+    // 4 x 1: red opaque, blue clear, white opaque, black at alpha 51; the
+    // levels of a see-through surface's base colour (alpha_weighted).
     TextureImage im{4, 1, {255, 0, 0, 255, 0, 0, 255, 0, 255, 255, 255, 255, 0, 0, 0, 51}};
-    const auto m = mip_chain(im, true);
+    const auto m = mip_chain(im, true, true);
     // Texel 0: red alone (the clear blue lends nothing), alpha 127.5 -> 128.
     EXPECT_EQ(texel(*m, 1, 0, 0, 0), 255);
     EXPECT_EQ(texel(*m, 1, 0, 0, 2), 0);
@@ -92,8 +93,15 @@ TEST(Mipmaps, ColourIsWeightedByAlphaAndAlphaAveraged) {
     EXPECT_EQ(texel(*m, 2, 0, 0, 3), 140);
     // All clear: the plain mean. As data: always the plain mean.
     TextureImage clear{2, 1, {255, 0, 0, 0, 0, 0, 255, 0}};
-    EXPECT_EQ(texel(*mip_chain(clear, true), 1, 0, 0, 0), 188);
+    EXPECT_EQ(texel(*mip_chain(clear, true, true), 1, 0, 0, 0), 188);
     EXPECT_EQ(texel(*mip_chain(im, false), 1, 0, 0, 2), 128);
+    // Where alpha hides nothing (an OPAQUE surface, an emissive texture),
+    // glTF ignores it, and so do the levels: red and blue average to linear
+    // (0.5, 0, 0.5), sRGB (188, 0, 188), as the two texels look up close.
+    const auto opaque = mip_chain(im, true);
+    EXPECT_EQ(texel(*opaque, 1, 0, 0, 0), 188);
+    EXPECT_EQ(texel(*opaque, 1, 0, 0, 2), 188);
+    EXPECT_EQ(texel(*opaque, 1, 0, 0, 3), 128);  // alpha averaged all the same
 }
 
 TEST(Mipmaps, EachLevelComesFromTheUnroundedOneAbove) {
