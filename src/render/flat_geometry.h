@@ -17,6 +17,7 @@
 #include "render/bvh_traversal.h"
 #include "render/primitive_ids.h"
 #include "render/wide_bvh.h"
+#include "scene/texture.h"
 #include "scene/scene.h"
 
 namespace fh {
@@ -102,13 +103,12 @@ struct TriangleUvs {
 // Where points lie on a triangle, for what its vertices carry: the
 // weights b1, b2 of v1 and v2 and, where its mesh has texture coordinates,
 // (u, v) there (FlatGeometry::point_on).
-// lod: log2 of each pixel's footprint there in (u, v) units, where a
-// texture may be read from its mipmaps (render/texture_footprint.h);
-// -infinity: a point.
+// footprint: each pixel's there in (u, v) units, where a texture may be
+// read from its mipmaps (render/texture_footprint.h); by default a point.
 template <typename T>
 struct TrianglePoint {
     Lanes<T> b1, b2, u, v;
-    Lanes<T> lod = splat(-kInfinity<T>);
+    UvFootprint<T> footprint;
 };
 
 // A triangle's edges from v0 in space and in its texture coordinates, and

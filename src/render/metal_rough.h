@@ -50,7 +50,7 @@ FH_HOT_INLINE Lanes<T> mirror_share(const Lanes<T>& m, const Lanes<T>& r) {
 template <typename T>
 __attribute__((noinline)) void metal_rough_at(const Texture& texture, const TrianglePoint<T>& at, T metallic,
                                               T roughness, Lanes<T>& metal, Lanes<T>& rough) {
-    const TexelLanes<T> c = texture.template sample<T>(at.u, at.v, at.lod);  // a data texture: n / 255
+    const TexelLanes<T> c = texture.template sample<T>(at.u, at.v, at.footprint);  // a data texture: n / 255
     metal = metallic * c.b;
     rough = roughness * c.g;
 }

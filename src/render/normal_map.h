@@ -33,7 +33,7 @@ FH_HOT_INLINE Vec3Lanes<T> normal_mapped(const FlatGeometry<T>& mesh, int prim, 
         if (!mesh.tangent_of(prim, du, w)) return n;
         along = Vec3Lanes<T>::splat(du);
     }
-    const TexelLanes<T> c = texture.template sample<T>(at.u, at.v, at.lod);  // a data texture: n / 255
+    const TexelLanes<T> c = texture.template sample<T>(at.u, at.v, at.footprint);  // a data texture: n / 255
     const Lanes<T> x = scale * (T(2) * c.r - T(1)), y = scale * (T(2) * c.g - T(1)), z = T(2) * c.b - T(1);
     const Vec3Lanes<T> tangent = along - dot(n, along) * n;
     // t vanishes where n lies along the tangent (a normal far off its face,

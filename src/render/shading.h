@@ -315,8 +315,7 @@ private:
             TrianglePoint<T> at{};
             if (scene_.textured && (!mesh.uvs.empty() || !mesh.colors.empty())) at = mesh.point_on(prim, point);
             if (scene_.minified && !mesh.uvs.empty())
-                at.lod = footprint_lod(mesh, prim, inst, inst.to_object.vector(ray.direction), cone_.at(travelled + h.t),
-                                       lanes);
+                at.footprint = footprint_on(mesh, prim, inst, ray.direction, cone_.at(travelled + h.t), lanes);
             const MaterialShading<T>& m = scene_.shading[size_t(inst.material)];
             const bool bumpy = scene_.textured && m.normal_texture >= 0 && !mesh.uvs.empty();
             if (bumpy)
@@ -373,7 +372,7 @@ private:
         const Lanes<T> one = splat(T(1));
         ColorLanes<T> albedo{one, one, one};
         if (texel) {
-            const TexelLanes<T> c = scene_.textures[size_t(m.texture)].template sample<T>(at.u, at.v, at.lod);
+            const TexelLanes<T> c = scene_.textures[size_t(m.texture)].template sample<T>(at.u, at.v, at.footprint);
             albedo = {c.r, c.g, c.b};
         }
         if (!mesh.colors.empty()) {
@@ -384,12 +383,12 @@ private:
         ColorLanes<T> tinted{albedo.x * m.tinted_ambient.x, albedo.y * m.tinted_ambient.y,
                              albedo.z * m.tinted_ambient.z};
         if (occluded) {
-            const Lanes<T> r = scene_.textures[size_t(m.occlusion_texture)].template sample<T>(at.u, at.v, at.lod).r;
+            const Lanes<T> r = scene_.textures[size_t(m.occlusion_texture)].template sample<T>(at.u, at.v, at.footprint).r;
             const Lanes<T> factor = T(1) + m.occlusion_strength * (r - T(1));
             tinted = {tinted.x * factor, tinted.y * factor, tinted.z * factor};
         }
         if (glow) {
-            const TexelLanes<T> c = scene_.textures[size_t(m.emissive_texture)].template sample<T>(at.u, at.v, at.lod);
+            const TexelLanes<T> c = scene_.textures[size_t(m.emissive_texture)].template sample<T>(at.u, at.v, at.footprint);
             put(ambient, tinted + ColorLanes<T>{c.r * m.emissive.x, c.g * m.emissive.y, c.b * m.emissive.z}, lanes, first);
         } else {
             put(ambient, tinted + m.emissive, lanes, first);

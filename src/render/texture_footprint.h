@@ -2,7 +2,7 @@
 // detail that picks a texture's mipmap (scene/texture.h). A ray cone (after
 // Akenine-Möller et al., "Texture Level of Detail Strategies for Real-Time
 // Ray Tracing", Ray Tracing Gems, 2019): each camera ray stands for a cone
-// as wide as its pixel (times kConeShare below), whose width at distance t is
+// as wide as its pixel, whose width at distance t is
 //     width(t) = width0 + spread t
 // -- perspective: width0 = 0 and spread = the pixel's height on the image
 // plane over projection_distance; orthographic: width0 = the pixel's
@@ -12,22 +12,29 @@
 // surface passes the cone on with t counted along the whole path, as a flat
 // mirror would (a curved one's focusing is ignored).
 //
-// On a triangle of world area A, at an angle theta to the ray, a width w
-// across the ray covers w / cos(theta) of the surface, and the texture maps
-// space to (u, v) by the root of the ratio of areas, sqrt(A_uv / A):
-//     footprint = w sqrt(A_uv / A) / cos(theta)
-// in (u, v) units, and lod = log2 footprint (Texture::sample adds log2 of
-// the texture's size). An instance's triangle is known in its mesh's
-// space, edges e1, e2, face normal N = e1 x e2; the instance maps it to
-// the world by a linear map L (to_world), so the world's face normal is
-// det(L) L^-T N, and the ray's world direction d is d_o = L^-1 d there:
-//     2 A      = |det L| |L^-T N|,     2 A_uv = |det_uv|,
-//     cos(theta) = |N . d_o| / |L^-T N|   (N_w . d = det(L) N . d_o)
-//     footprint = w sqrt(|det_uv| |L^-T N| / |det L|) / |N . d_o|
-// -- for any map, stretched or mirrored (for L = s R it is the mesh-space
-// footprint scaled by 1 / s). Where the ray grazes the face (N . d_o = 0)
-// lod is +infinity (the smallest level); where the triangle has no area in
-// the image, -infinity (a point): never NaN from a real cone.
+// On the triangle hit, the cone's round cross-section -- width w across
+// the ray -- falls on the face as an ellipse: w wide across the ray, w /
+// cos(theta) long along it. The texture maps the face to (u, v) linearly,
+// by the gradients of u and v along it, so the footprint in the image is
+// the ellipse those gradients make of it (for a map that shears or
+// stretches the image, a slanted one). It is worked out in the world, the
+// triangle's edges e1, e2 carried there by its instance's linear map L
+// (any map: stretched, sheared, mirrored), face normal n = e1 x e2:
+//     a point p - v0 = a e1 + b e2 of the face has a = p . (e2 x n) / n.n,
+//     b = p . (n x e1) / n.n, and (u, v) - (u0, v0) = a (du1, dv1) +
+//     b (du2, dv2): the gradients gu, gv of u and v;
+//     x1 = the unit vector along the face across the ray (d x n, or any
+//     along the face for a ray along n), x2 = d x x1 across the ray too,
+//     which falls on the face at p2 = x2 - d (n . x2) / (n . d);
+//     the ellipse on the face has axes w x1 and w p2, end to end, and in
+//     the image g1 = w (gu . x1, gv . x1) and g2 = w (gu . p2, gv . p2).
+// Its length is the longer of |g1| and |g2| (the whole length for a map
+// that keeps angles, as most do, and close to it otherwise), its width
+// the area |g1 x g2| over that length. The texture reads it along the
+// longer one (scene/texture.h, UvFootprint). Where the ray grazes the face
+// (n . d = 0) the footprint is infinite (the smallest level); where the
+// triangle has no area in the image, a point; where it has none in the
+// world, unknown (read as magnified): never NaN from a real cone.
 #pragma once
 
 #include <algorithm>
@@ -39,15 +46,12 @@
 
 namespace fh {
 
-// The cone's width as a share of the pixel's: 1/sqrt(2), half a level
-// sharper than the pixel itself. Trilinear reads blend each level's texels
-// with their neighbours' over about twice a texel, so a cone the pixel's
-// full width blurs more than the pixel's own box of samples does. On a
-// checkerboard floor receding to the horizon (400 x 225, 1 sample, against
-// 256 samples without mipmaps) a full width gives 26.2 dB, 1/sqrt(2) 27.8,
-// 1/2 26.6; without mipmaps 17.6 (docs/gltf.md, "Textures").
-inline constexpr double kConeShare = 0.70710678118654752;
-
+// The cone is as wide as its pixel, as the paper has it. Measured on a
+// checkerboard floor receding to the horizon (400 x 225, 1 sample,
+// against 256 samples; docs/gltf.md, "Textures"): 38.6 dB, against 37.5
+// at 0.85 of the pixel and 32.6 at 1.2. (Read at one level by the
+// footprint's length, before reads along it, 1/sqrt(2) of the pixel did
+// best: 28.2 dB.)
 template <typename T>
 struct PixelCone {
     T width = 0;   // across a camera ray's pixel where it starts
@@ -55,7 +59,7 @@ struct PixelCone {
 
     static PixelCone of(const Camera& camera, int samples_per_pixel) {
         const double pixel =
-            kConeShare * 2 * camera.half_height / camera.height / std::sqrt(double(std::max(1, samples_per_pixel)));
+            2 * camera.half_height / camera.height / std::sqrt(double(std::max(1, samples_per_pixel)));
         if (camera.projection == Projection::perspective) return {T(0), T(pixel / camera.projection_distance)};
         return {T(pixel), T(0)};
     }
@@ -63,33 +67,77 @@ struct PixelCone {
     FH_HOT_INLINE Lanes<T> at(const Lanes<T>& distance) const { return width + spread * distance; }
 };
 
-// lod at hits on triangle `prim` of instance `instance`'s mesh (uvs not
-// empty) of rays whose directions in the mesh's space are d_object, their
-// cones `width` wide there in world units. Only the `lanes` are worked out;
-// the others take the first one's lod, so that they ask for no other
-// level (their texels are not used). Out of line, as the
-// metallic-roughness terms are (render/metal_rough.h): code inlined into
-// the shader's loop costs the scenes that never run it.
+// The footprints at hits on triangle `prim` of instance `instance`'s mesh
+// (uvs not empty) of rays with world directions `direction`, their cones
+// `width` wide there. Only the `lanes` are worked out; the others take the
+// first one's, so that they ask for no other reads (their texels are not
+// used). Out of line, as the metallic-roughness terms are
+// (render/metal_rough.h): code inlined into the shader's loop costs the
+// scenes that never run it.
 template <typename T>
-__attribute__((noinline)) Lanes<T> footprint_lod(const FlatGeometry<T>& mesh, int prim,
-                                                 const FlatInstance<T>& instance, const Vec3Lanes<T>& d_object,
-                                                 const Lanes<T>& width, const LaneInts<T>& lanes) {
+__attribute__((noinline)) UvFootprint<T> footprint_on(const FlatGeometry<T>& mesh, int prim,
+                                                      const FlatInstance<T>& instance,
+                                                      const Vec3Lanes<T>& direction, const Lanes<T>& width,
+                                                      const LaneInts<T>& lanes) {
+    // The triangle's gradients, once, in double: a small triangle's
+    // n . n would underflow in float.
     const UvEdges<T> c = mesh.uv_edges(prim);
-    const Vec3<T> normal = glm::cross(c.e1, c.e2);
-    const AffineMap<T>& to_world = instance.to_world;
-    const T det = std::abs(glm::dot(to_world.x, glm::cross(to_world.y, to_world.z)));
-    const AffineMap<T>& n = instance.normal_to_world;
-    const Vec3<T> turned = normal.x * n.x + normal.y * n.y + normal.z * n.z;  // L^-T N
-    const T root = std::sqrt(std::abs(c.det) * glm::length(turned) / det);
-    const Lanes<T> footprint = width * root / abs(dot(Vec3Lanes<T>::splat(normal), d_object));
-    Lanes<T> lod = footprint;  // overwritten lane by lane
+    const AffineMap<T>& l = instance.to_world;
+    const glm::dvec3 lx(l.x), ly(l.y), lz(l.z);
+    const glm::dvec3 e1 = double(c.e1.x) * lx + double(c.e1.y) * ly + double(c.e1.z) * lz;
+    const glm::dvec3 e2 = double(c.e2.x) * lx + double(c.e2.y) * ly + double(c.e2.z) * lz;
+    const glm::dvec3 n = glm::cross(e1, e2);
+    const double nn = glm::dot(n, n);
+    const glm::dvec3 ra = glm::cross(e2, n) / nn, rb = glm::cross(n, e1) / nn;
+    const Vec3Lanes<T> gu = Vec3Lanes<T>::splat(Vec3<T>(double(c.du1) * ra + double(c.du2) * rb));
+    const Vec3Lanes<T> gv = Vec3Lanes<T>::splat(Vec3<T>(double(c.dv1) * ra + double(c.dv2) * rb));
+    const Vec3Lanes<T> normal = Vec3Lanes<T>::splat(Vec3<T>(n / std::sqrt(nn)));
+    const Vec3Lanes<T> side = Vec3Lanes<T>::splat(Vec3<T>(glm::normalize(e1)));
+
+    const Vec3Lanes<T> d = direction * (T(1) / sqrt(dot(direction, direction)));
+    const Vec3Lanes<T> across = cross(d, normal);
+    const Lanes<T> sin2 = dot(across, across);
+    // (Along the normal, within a millionth of a radian: any side will do.)
+    const Vec3Lanes<T> x1 = select(sin2 > T(1e-12), across * (T(1) / sqrt(sin2)), side);
+    const Vec3Lanes<T> x2 = cross(d, x1);
+    const Lanes<T> cosine = dot(normal, d);
+    const Vec3Lanes<T> p2 = x2 - d * (dot(normal, x2) / cosine);
+    const Lanes<T> g1u = width * dot(gu, x1), g1v = width * dot(gv, x1);
+    const Lanes<T> g2u = width * dot(gu, p2), g2v = width * dot(gv, p2);
+    const Lanes<T> long1 = g1u * g1u + g1v * g1v, long2 = g2u * g2u + g2v * g2v;
+    const Lanes<T> area = abs(g1u * g2v - g1v * g2u);
+
+    UvFootprint<T> f;
     int first = -1;
     for_each_lane(lanes, [&](int i) {
-        lod[i] = std::log2(footprint[i]);
         if (first < 0) first = i;
+        const bool second = long2[i] > long1[i];
+        const T length = std::sqrt(second ? long2[i] : long1[i]);
+        if (!(cosine[i] != 0) || length == kInfinity<T>) {  // grazing
+            f.lod[i] = f.lod_long[i] = kInfinity<T>;
+        } else if (!(length > 0)) {  // no area in the image (0), or none in the world (NaN)
+            f.lod[i] = f.lod_long[i] = length == 0 ? -kInfinity<T> : std::numeric_limits<T>::quiet_NaN();
+        } else {
+            const T across_width = area[i] / length;  // finite: length > 0 and finite
+            const T read = std::max(across_width, length / T(kMaxProbes));
+            f.lod[i] = std::log2(read);
+            f.lod_long[i] = std::log2(length);
+            // (A hundredth of slack: a footprint barely longer than wide is read once.)
+            f.probes[i] = std::min(T(kMaxProbes), std::max(T(1), std::ceil(length / read - T(0.01))));
+            f.axis_u[i] = second ? g2u[i] : g1u[i];
+            f.axis_v[i] = second ? g2v[i] : g1v[i];
+        }
         return false;
     });
-    return select(lanes, lod, splat(lod[first < 0 ? 0 : first]));
+    if (first >= 0) {
+        const LaneInts<T> others = ~lanes;
+        f.lod = select(others, splat(f.lod[first]), f.lod);
+        f.lod_long = select(others, splat(f.lod_long[first]), f.lod_long);
+        f.axis_u = select(others, splat(f.axis_u[first]), f.axis_u);
+        f.axis_v = select(others, splat(f.axis_v[first]), f.axis_v);
+        f.probes = select(others, splat(f.probes[first]), f.probes);
+    }
+    return f;
 }
 
 }  // namespace fh

@@ -20,9 +20,11 @@
 // "Textures").
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -87,6 +89,28 @@ inline int wrap_texel(long i, int n, Wrap wrap) {
 template <typename T>
 struct TexelLanes {
     Lanes<T> r, g, b, a;
+};
+
+// How many reads at most one footprint takes along its long axis: a
+// surface seen at a slant is filtered as sharply as head-on up to a
+// footprint this many times longer than wide (GPUs offer 2 to 16).
+inline constexpr int kMaxProbes = 8;
+
+// A pixel's footprint on a texture where its ray hits, in (u, v) units
+// (render/texture_footprint.h): an ellipse, long across the image where
+// the surface is seen at a slant. With mipmaps it is read as `probes`
+// reads spaced evenly along its long axis (axis_u, axis_v: end to end),
+// each over a footprint of 2^lod -- the ellipse's width, or a kMaxProbes-th
+// of its length where that is more -- as GPUs' anisotropic filtering does;
+// without, once, over 2^lod_long, its length. -infinity: a point; NaN:
+// none known; both read as magnified. +infinity: a grazing ray (the
+// smallest level).
+template <typename T>
+struct UvFootprint {
+    Lanes<T> lod = splat(-std::numeric_limits<T>::infinity());
+    Lanes<T> lod_long = splat(-std::numeric_limits<T>::infinity());
+    Lanes<T> axis_u = splat(T(0)), axis_v = splat(T(0));
+    Lanes<T> probes = splat(T(1));  // 1 to kMaxProbes, whole
 };
 
 // Per lane: floor(x).
@@ -162,6 +186,14 @@ struct Texture {
         return sample_minified<T>(u, v, lod);
     }
 
+    // The same over each lane's footprint `f`, along its long axis.
+    template <typename T>
+    FH_HOT_INLINE TexelLanes<T> sample(const Lanes<T>& u, const Lanes<T>& v, const UvFootprint<T>& f) const {
+        if (!minifies()) return sample<T>(u, v);
+        if (mips == MipFilter::none) return sample_minified<T>(u, v, f.lod_long);
+        return sample_along<T>(u, v, f);
+    }
+
     // One point (tests, cutouts): the packet formula in a packet of one.
     std::array<float, 4> sample(double u, double v) const { return sample(u, v, -kInfinity<double>); }
     std::array<float, 4> sample(double u, double v, double lod) const {
@@ -204,6 +236,26 @@ private:
         const TexelLanes<T> near = any(~far) ? sample<T>(u, v) : sum;
         return {select(far, sum.r, near.r), select(far, sum.g, near.g), select(far, sum.b, near.b),
                 select(far, sum.a, near.a)};
+    }
+
+    // Reads i = 0 .. probes - 1 at (i + 1/2) / probes - 1/2 of the axis
+    // from (u, v), each a 1 / probes share; a lane's reads and sum are its
+    // own, whatever the other lanes ask for.
+    template <typename T>
+    __attribute__((noinline)) TexelLanes<T> sample_along(const Lanes<T>& u, const Lanes<T>& v,
+                                                         const UvFootprint<T>& f) const {
+        T most = 1;
+        for (int lane = 0; lane < kLanes<T>; ++lane) most = std::max(most, f.probes[lane]);
+        if (most <= 1) return sample_minified<T>(u, v, f.lod);
+        const Lanes<T> zero = splat(T(0)), share = T(1) / f.probes;
+        TexelLanes<T> sum{zero, zero, zero, zero};
+        for (int i = 0; i < int(most); ++i) {
+            const Lanes<T> weight = select(T(i) < f.probes, share, zero);
+            const Lanes<T> at = (T(i) + T(0.5)) * share - T(0.5);
+            const TexelLanes<T> c = sample_minified<T>(u + at * f.axis_u, v + at * f.axis_v, f.lod);
+            sum = {sum.r + weight * c.r, sum.g + weight * c.g, sum.b + weight * c.b, sum.a + weight * c.a};
+        }
+        return sum;
     }
 
     template <typename T>

@@ -98,6 +98,8 @@ struct Quad {
     int material = -1;
     double scale = 1;                // its node's scale (the positions are divided by it)
     double stretch = 1;              // and its node's further scale along x (x divided by it too)
+    double lift = 1;                 // and along its normal (z divided by it too)
+    double tilt = 0;                 // its node's turn about x, degrees: the y1 edge up, for tilt > 0
     bool uvs = true;                 // TEXCOORD_0
     std::vector<float> uv1;          // TEXCOORD_1 (8 numbers), or none
     bool normals = false;            // NORMAL: up, at every vertex
@@ -129,7 +131,7 @@ inline std::string quads_body(Bin& bin, const std::vector<Quad>& quads, const st
         for (int layer = 0; layer < q.layers; ++layer) {
             const double z = q.z + q.layer_step * layer;
             auto at = [&](double x, double y) {
-                return std::vector<float>{float(x / (s * q.stretch)), float(z / s), float(-y / s)};
+                return std::vector<float>{float(x / (s * q.stretch)), float(z / (s * q.lift)), float(-y / s)};
             };
             for (const auto& v : {at(q.x0, q.y1), at(q.x1, q.y1), at(q.x1, q.y0), at(q.x0, q.y0)})
                 p.insert(p.end(), v.begin(), v.end());
@@ -173,8 +175,13 @@ inline std::string quads_body(Bin& bin, const std::vector<Quad>& quads, const st
         meshes += std::string(meshes.empty() ? "" : ", ") + "{\"primitives\": [{\"attributes\": {" + attributes +
                   "}, \"indices\": " + std::to_string(indices) +
                   (q.material >= 0 ? ", \"material\": " + std::to_string(q.material) : "") + "}]}";
+        // (The file's x turned towards its y: the world's y towards z.)
+        const double half = q.tilt * kPi / 360;
         nodes += std::string(nodes.empty() ? "" : ", ") + "{\"mesh\": " + std::to_string(k) +
-                 (s != 1 || q.stretch != 1 ? ", \"scale\": [" + num(s * q.stretch) + ", " + num(s) + ", " + num(s) + "]" : "") +
+                 (s != 1 || q.stretch != 1 || q.lift != 1
+                      ? ", \"scale\": [" + num(s * q.stretch) + ", " + num(s * q.lift) + ", " + num(s) + "]"
+                      : "") +
+                 (q.tilt != 0 ? ", \"rotation\": [" + num(std::sin(half)) + ", 0, 0, " + num(std::cos(half)) + "]" : "") +
                  "}";
         scene += std::string(scene.empty() ? "" : ", ") + std::to_string(k);
     }

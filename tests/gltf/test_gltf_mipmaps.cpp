@@ -1,19 +1,18 @@
 // glTF textures seen from far away (gltf/gltf_materials.cpp, scene/texture.h,
 // render/texture_footprint.h): each minFilter as the texture's filters,
-// mipmaps made once per image, and the pixels of a fine checkerboard that
-// a pixel covers 8 x 8 texels of -- worked out by hand.
+// mipmaps made once per image, the pixels of a fine checkerboard that a
+// pixel covers 8 x 8 texels of, and of stripes on a slanted quad -- worked
+// out by hand.
 //
 // The quad x in [-1, 1], y in [-0.99, 1.01] at z = 0 carries a 64 x 64
 // checkerboard of single black and white texels (TEXCOORD_0 over the whole
 // quad). The 8 x 8 orthographic top view (half height 1) makes each pixel
-// 0.25 units wide: its ray cone is 0.25 / sqrt(2) across (kConeShare), and
-// on a triangle of the quad (legs 2 in space, 1 in the image: |e1 x e2| =
-// 4, |det_uv| = 1, the ray along its normal) the footprint is that times
-// sqrt(1 * 4) / 4, 2^-3.5 of the image: lod -3.5, lambda = -3.5 + log2 64
-// = 2.5. Levels 2 and 3 average 4 x 4 and 8 x 8 blocks, half black and
-// half white: linear 0.5, the sRGB byte 188, which reads as linear
-// 0.50289 -- as does every level below the image. Lit by ambient 0.2 and
-// a sun of 0.6 straight down: 255 * 0.8 * 0.50289 = 102.6, the pixel 103.
+// 0.25 units wide, and so its ray cone; on the quad, u runs 1/2 a unit, so
+// the footprint is 1/8 of the image each way: lod -3, lambda = -3 + log2 64
+// = 3. Level 3 averages 8 x 8 blocks, half black and half white: linear
+// 0.5, the sRGB byte 188, which reads as linear 0.50289 -- as does every
+// level below the image. Lit by ambient 0.2 and a sun of 0.6 straight
+// down: 255 * 0.8 * 0.50289 = 102.6, the pixel 103.
 //
 // Read without mipmaps (minFilter NEAREST), every pixel centre lands on a
 // white texel -- x = -0.825 + 0.25 i gives column (x + 1) * 32 = 5.6 + 8 i,
@@ -140,51 +139,104 @@ TEST(GltfMipmaps, TheFootprintFollowsTheInstancesScale) {
 }
 
 // A PNG of n x n texels in vertical stripes `width` texels wide, black
-// first.
-std::string stripes_png(int n, int width) {
+// first (across: horizontal ones, black at the top).
+std::string stripes_png(int n, int width, bool across = false) {
     Image im(n, n);
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i)
-            for (int c = 0; c < 3; ++c) im.rgb[3 * (size_t(j) * size_t(n) + size_t(i)) + size_t(c)] = (i / width) % 2 ? 255 : 0;
+            for (int c = 0; c < 3; ++c)
+                im.rgb[3 * (size_t(j) * size_t(n) + size_t(i)) + size_t(c)] = ((across ? j : i) / width) % 2 ? 255 : 0;
     return as_string(encode_png(im));
 }
 
-TEST(GltfMipmaps, LambdaPicksTheLevelsAndTheirShares) {
+// The quad q with stripes 8 texels wide (across: horizontal), trilinear.
+std::string striped(const Quad& q, bool across = false) {
+    return quads_file({q}, surfaces({material("[1, 1, 1, 1]", tex(0))}, {{0, 0}},
+                                    {image_json(stripes_png(64, 8, across))}, {sampler_json(kRepeat, kRepeat)}));
+}
+
+TEST(GltfMipmaps, LambdaPicksTheLevel) {
     // 64 x 64 texels in stripes 8 wide: levels 0-3 keep them, 8 to 1
-    // texels wide; level 4 is grey. At lambda = 2.5 a pixel is half level 2
-    // and half level 3. Pixel column i (u * 64 = 5.6 + 8 i) lies in stripe
-    // i: at level 2 (16 texels, stripes 2 wide) u * 16 - 1/2 = 0.9 + 2 i
-    // blends texels 2 i and 2 i + 1, both stripe i's: pure; at level 3
-    // (stripes 1 wide) u * 8 - 1/2 = 0.2 + i blends texel i (0.8) with
-    // texel i + 1 (0.2). So the pixel is 0.9 of stripe i's colour and 0.1
-    // of the next one's, linear: white columns (odd i) 0.9 * 204 = 183.6 ->
-    // 184, black ones (even i) 0.1 * 204 = 20.4 -> 20.
+    // texels wide; level 4 is grey. At lambda = 3 a pixel is level 3
+    // alone: pixel column i (u * 64 = 5.6 + 8 i) has u * 8 - 1/2 = 0.2 + i
+    // there, 0.8 of texel i (stripe i) and 0.2 of texel i + 1. Linear:
+    // white columns (odd i) 0.8 * 204 = 163.2 -> 163, black ones (even i)
+    // 0.2 * 204 = 40.8 -> 41. A tenth of a level more would blend in a
+    // tenth of level 4's grey (157 and 46).
     //
-    // The same quad, its node stretched 2 along x (its positions' x
-    // halved): the same world, the same footprint, the same pixels -- a
-    // footprint taken in the mesh's own space with one scale would be
-    // sqrt(2) too wide (lambda 3: 0.8 and 0.2, 163 and 41).
-    for (double stretch : {1.0, 2.0, 0.25}) {
+    // The same quad, its node stretched 2 or 1/4 along x (its positions'
+    // x divided by that): the same world, the same footprint, the same
+    // pixels -- a footprint taken in the mesh's own space with one scale
+    // would be sqrt(2) too wide. Stretched 3 along its normal: nothing
+    // moves (the quad lies at z = 0), and nothing changes.
+    struct Node {
+        double stretch, lift;
+    };
+    for (const Node node : {Node{1, 1}, Node{2, 1}, Node{0.25, 1}, Node{1, 3}}) {
         Quad q{-1, 1, -0.99, 1.01, 0, 0};
-        q.stretch = stretch;
-        const std::string json = quads_file(
-            {q}, surfaces({material("[1, 1, 1, 1]", tex(0))}, {{0, 0}}, {image_json(stripes_png(64, 8))},
-                          {sampler_json(kRepeat, kRepeat)}));
+        q.stretch = node.stretch;
+        q.lift = node.lift;
         for (Precision p : kPrecisions) {
-            const Image im = top_view(lit(json), p);
-            const std::string what = "stretch " + num(stretch) + ", " + precision_name(p);
+            const Image im = top_view(lit(striped(q)), p);
+            const std::string what =
+                "stretch " + num(node.stretch) + ", lift " + num(node.lift) + ", " + precision_name(p);
             for (int i = 0; i < 8; ++i) {
-                const int v = i % 2 ? 184 : 20;
+                const int v = i % 2 ? 163 : 41;
                 for (int j = 0; j < 8; ++j) expect_pixel(im, i, j, {v, v, v}, what);
             }
         }
     }
 }
 
+// The quad turned 60 degrees about x (its normal (0, -sin 60, cos 60)),
+// seen from above by 8 x 4 pixels 0.25 wide (half height 0.5), lit along
+// its normal as the flat quad is from above. Pixel row j sees y = 0.375 -
+// 0.25 j, where the quad's own y is twice that: v = (1.01 - y) / 2 = 0.13
+// + 0.25 j; columns see the flat quad's u. Across the rays, x, a pixel's
+// footprint is 1/8 of the image as before; along v it falls on 1 / cos 60
+// = 2 times as much of the quad: 1/4. So two reads at lambda 3, at v
+// -+ 1/16 -- where a footprint read once by its length would be lambda 4,
+// level 4's grey: 103.
+Quad tilted() {
+    Quad q{-1, 1, -0.99, 1.01, 0, 0};
+    q.tilt = 60;
+    return q;
+}
+Lighting along_tilted_normal() {
+    Lighting l;
+    l.direction = {0, std::sin(kPi / 3), -std::cos(kPi / 3)};
+    return l;
+}
+
+TEST(GltfMipmaps, ASlantedQuadKeepsItsStripesAcross) {
+    // Stripes across x, the footprint's width: both reads see level 3's
+    // 0.8 and 0.2 of the flat quad -- 163 and 41.
+    for (Precision p : kPrecisions) {
+        const Image im = top_view(lit(striped(tilted()), along_tilted_normal()), p, 8, 4, 0.5);
+        for (int i = 0; i < 8; ++i) {
+            const int v = i % 2 ? 163 : 41;
+            for (int j = 0; j < 4; ++j) expect_pixel(im, i, j, {v, v, v}, precision_name(p));
+        }
+    }
+}
+
+TEST(GltfMipmaps, ASlantedQuadIsReadAlongItsLength) {
+    // Horizontal stripes, along the footprint's length: the reads at v =
+    // 0.0675 + 0.25 j and 0.1925 + 0.25 j find level 3's rows (one a
+    // stripe, black first) at v * 8 - 1/2 = 0.04 + 2 j and 1.04 + 2 j:
+    // 0.04 and 0.96 of white, 0.5 together: 0.5 * 204 = 102. (One read at
+    // the centre, 0.54 + 2 j: 110.)
+    for (Precision p : kPrecisions) {
+        const Image im = top_view(lit(striped(tilted(), true), along_tilted_normal()), p, 8, 4, 0.5);
+        for (int i = 0; i < 8; ++i)
+            for (int j = 0; j < 4; ++j) expect_pixel(im, i, j, {102, 102, 102}, precision_name(p));
+    }
+}
+
 TEST(GltfMipmaps, APerspectiveCameraReadsTheSameMean) {
     // The eye 10 above the quad, the image plane at 9: the cone is
-    // 0.25 / 9 * 10 / sqrt(2) wide there, lambda = 2.65 -- levels 2 and 3,
-    // both the same grey. (Column 7 looks past the quad's edge: x = 1.02.)
+    // 0.25 / 9 * 10 wide there, lambda = 3.15 -- levels 3 and 4, both the
+    // same grey. (Column 7 looks past the quad's edge: x = 1.02.)
     for (Precision p : kPrecisions)
         expect_columns(top_view(lit(checker_file(sampler_json(kRepeat, kRepeat))), p, 8, 8, 1, 0.05,
                                 Projection::perspective),
@@ -196,7 +248,7 @@ TEST(GltfMipmaps, TheConeGoesOnPastAClearPane) {
     // striped floor: the rays go on past it, their cones counting the whole
     // path -- the floor's pixels as without the pane. Were the cone to
     // start again at the pane, its width at the floor would halve and
-    // lambda drop by one (levels 1 and 2, stripes no longer blended).
+    // lambda drop by one (levels 2 and 3 instead of 3 and 4).
     Quad floor{-1, 1, -0.99, 1.01, 0, 0};
     const Quad pane{-3, 3, -3, 3, 5, 1};
     auto file = [&](bool with_pane) {
@@ -218,10 +270,10 @@ TEST(GltfMipmaps, TheConeGoesOnPastAClearPane) {
 
 TEST(GltfMipmaps, SupersamplingNarrowsTheCone) {
     // 4 samples a pixel: each stands for half the pixel's width, lambda =
-    // 1.5 -- levels 1 and 2, again the mean 188 -- and the samples, all
-    // grey, average to the same 103. (With 16, lambda = 0.5 would blend in
-    // the image itself. Column 7's and row 7's pixels reach past the
-    // quad's edges: x up to 1.05, y down to -1.)
+    // 2 -- level 2, again the mean 188 -- and the samples, all grey,
+    // average to the same 103. (With 64, lambda = 0 would read the image
+    // itself. Column 7's and row 7's pixels reach past the quad's edges: x
+    // up to 1.05, y down to -1.)
     RenderSettings settings;
     settings.samples_per_pixel = 4;
     const Image im = render_frame(lit(checker_file(sampler_json(kRepeat, kRepeat))), top_camera(), settings, nullptr).image;
@@ -233,8 +285,8 @@ TEST(GltfMipmaps, RefinedPixelsNarrowTheConeAsUniformSamplesDo) {
     // Adaptive anti-aliasing gives the stripes' pixels (each 164 from its
     // neighbours) 4 stratified samples instead of 1: each stands for half
     // the pixel, as in a frame of 4 samples a pixel -- the same pixels. A
-    // refined pixel's cone left a whole pixel wide would read levels 2
-    // and 3 instead of 1 and 2.
+    // refined pixel's cone left a whole pixel wide would read level 3
+    // instead of 2.
     const Scene s = lit(quads_file({{-1, 1, -0.99, 1.01, 0, 0}},
                                    surfaces({material("[1, 1, 1, 1]", tex(0))}, {{0, 0}},
                                             {image_json(stripes_png(64, 8))}, {sampler_json(kRepeat, kRepeat)})));

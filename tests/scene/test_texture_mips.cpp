@@ -2,7 +2,8 @@
 // level the mean of the texels its span covers in linear values, rounded
 // to bytes once, level by level from the unrounded values; and which level, or which two, a read takes for a
 // footprint of 2^lod in (u, v) units -- lambda = lod + log2 sqrt(w h) --
-// for each of glTF's minFilters, lane by lane, with infinite and NaN lods.
+// for each of glTF's minFilters, lane by lane, with infinite and NaN lods;
+// and a slanted footprint read as several reads along its length.
 //
 // A mean of linear 0.5 is the sRGB byte 188: 1.055 * 0.5^(1/2.4) - 0.055 =
 // 0.73535, times 255 = 187.51.
@@ -201,6 +202,68 @@ TEST(Mipmaps, EachLaneReadsItsOwnLevels) {
             const TexelLanes<T> one = t.sample<T>(splat(u[k]), splat(v[k]), splat(lod[k]));
             EXPECT_EQ(all.r[k], one.r[0]) << "lane " << k;
             EXPECT_EQ(all.a[k], one.a[0]) << "lane " << k;
+            EXPECT_TRUE(std::isfinite(all.r[k])) << "lane " << k;
+        }
+    };
+    check(0.0);
+    check(0.0f);
+}
+
+// Each lane's footprint `f`, one value: the read in lane 0 of a packet of it.
+double along(const Texture& t, double u, double v, double lod, double probes, double axis_u, double axis_v,
+             double lod_long = kInf) {
+    UvFootprint<double> f;
+    f.lod = splat(lod);
+    f.lod_long = splat(lod_long);
+    f.probes = splat(probes);
+    f.axis_u = splat(axis_u);
+    f.axis_v = splat(axis_v);
+    return t.sample<double>(splat(u), splat(v), f).r[0];
+}
+
+TEST(Mipmaps, ASlantedFootprintIsReadAlongItsLength) {
+    const Texture t = checker(MipFilter::linear);
+    // One read: the footprint's centre, as a read of its lod.
+    EXPECT_DOUBLE_EQ(along(t, kU, kV, -1.5, 1, 0.75, 0), t.sample<double>(splat(kU), splat(kV), splat(-1.5)).r[0]);
+    // Two reads a texel apart along u, magnified (bilinear): u = 1/16 and
+    // 3/16, a quarter of the way from texel 0 (0) towards its neighbours
+    // 3 (wrapped) and 1 (both 1): 0.25 each, where the centre reads 0.
+    EXPECT_DOUBLE_EQ(along(t, kU, kV, -kInf, 2, 0.25, 0), 0.25);
+    // The same along v: texels (0, 3) and (0, 1), both 1.
+    EXPECT_DOUBLE_EQ(along(t, kU, kV, -kInf, 2, 0, 0.25), 0.25);
+    // Three reads over 3 texels at lambda 0.5: at texels 3, 0 and 1 of
+    // row 0 (1, 0, 1), each half that texel and half level 1's grey.
+    EXPECT_NEAR(along(t, kU, kV, -1.5, 3, 0.75, 0), 0.5 * (2.0 / 3) + 0.5 * kGrey, 1e-6);
+    // Without mipmaps the footprint is read once, over its length
+    // (lod_long): minified, nearest, at u = 1/4 -- texel 1, where two
+    // reads at u = 3/16 and 5/16 would find texels 0 and 1.
+    const Texture plain = checker(MipFilter::none, Filter::nearest);
+    EXPECT_DOUBLE_EQ(along(plain, 0.25, kV, -kInf, 2, 0.25, 0, 5), 1);
+    EXPECT_DOUBLE_EQ(along(plain, 0.25, kV, -kInf, 2, 0.25, 0, -kInf), 0.5);  // magnified: bilinear, once
+}
+
+TEST(Mipmaps, EachLaneReadsItsOwnFootprint) {
+    // Lanes of 1 to 8 reads, lambda from a point to a grazing ray, each
+    // read in its lane as alone -- to the bit, float and double.
+    const Texture t = checker(MipFilter::linear);
+    const double lods[] = {-kInf, -1.5, -1, 10, std::nan(""), -1.75, 0.3, -2};
+    auto check = [&](auto zero) {
+        using T = decltype(zero);
+        Lanes<T> u, v;
+        UvFootprint<T> f;
+        for (int k = 0; k < kLanes<T>; ++k) {
+            u[k] = T(0.05 + 0.1 * k), v[k] = T(0.9 - 0.1 * k);
+            f.lod[k] = T(lods[k % 8]);
+            f.probes[k] = T(1 + k % kMaxProbes);
+            f.axis_u[k] = T(0.3 * (k % 3)), f.axis_v[k] = T(-0.2 * (k % 2));
+        }
+        const TexelLanes<T> all = t.sample<T>(u, v, f);
+        for (int k = 0; k < kLanes<T>; ++k) {
+            UvFootprint<T> one;
+            one.lod = splat(f.lod[k]), one.probes = splat(f.probes[k]);
+            one.axis_u = splat(f.axis_u[k]), one.axis_v = splat(f.axis_v[k]);
+            const TexelLanes<T> alone = t.sample<T>(splat(u[k]), splat(v[k]), one);
+            EXPECT_EQ(all.r[k], alone.r[0]) << "lane " << k;
             EXPECT_TRUE(std::isfinite(all.r[k])) << "lane " << k;
         }
     };
