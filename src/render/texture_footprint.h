@@ -107,35 +107,21 @@ __attribute__((noinline)) UvFootprint<T> footprint_on(const FlatGeometry<T>& mes
     const Lanes<T> long1 = g1u * g1u + g1v * g1v, long2 = g2u * g2u + g2v * g2v;
     const Lanes<T> area = abs(g1u * g2v - g1v * g2u);
 
-    UvFootprint<T> f;
-    int first = -1;
-    for_each_lane(lanes, [&](int i) {
-        if (first < 0) first = i;
-        const bool second = long2[i] > long1[i];
-        const T length = std::sqrt(second ? long2[i] : long1[i]);
-        if (!(cosine[i] != 0) || length == kInfinity<T>) {  // grazing
-            f.lod[i] = f.lod_long[i] = kInfinity<T>;
-        } else if (!(length > 0)) {  // no area in the image (0), or none in the world (NaN)
-            f.lod[i] = f.lod_long[i] = length == 0 ? -kInfinity<T> : std::numeric_limits<T>::quiet_NaN();
-        } else {
-            const T across_width = area[i] / length;  // finite: length > 0 and finite
-            const T read = std::max(across_width, length / T(kMaxProbes));
-            f.lod[i] = std::log2(read);
-            f.lod_long[i] = std::log2(length);
-            // (A hundredth of slack: a footprint barely longer than wide is read once.)
-            f.probes[i] = std::min(T(kMaxProbes), std::max(T(1), std::ceil(length / read - T(0.01))));
-            f.axis_u[i] = second ? g2u[i] : g1u[i];
-            f.axis_v[i] = second ? g2v[i] : g1v[i];
-        }
-        return false;
-    });
-    if (first >= 0) {
+    const LaneInts<T> second = long2 > long1;
+    const Lanes<T> length = sqrt(select(second, long2, long1));
+    const LaneInts<T> grazing = (cosine == T(0)) | (length == kInfinity<T>);
+    // A point in the image (0) or none in the world (NaN) keeps its length.
+    const LaneInts<T> real = ~grazing & (length > T(0));
+    const Lanes<T> zero = splat(T(0));
+    UvFootprint<T> f{select(grazing, splat(kInfinity<T>), length), select(real, area / length, zero),
+                     select(real, select(second, g2u, g1u), zero), select(real, select(second, g2v, g1v), zero)};
+    if (const unsigned bits = lane_bits(lanes)) {
+        const int first = __builtin_ctz(bits);
         const LaneInts<T> others = ~lanes;
-        f.lod = select(others, splat(f.lod[first]), f.lod);
-        f.lod_long = select(others, splat(f.lod_long[first]), f.lod_long);
+        f.length = select(others, splat(f.length[first]), f.length);
+        f.width = select(others, splat(f.width[first]), f.width);
         f.axis_u = select(others, splat(f.axis_u[first]), f.axis_u);
         f.axis_v = select(others, splat(f.axis_v[first]), f.axis_v);
-        f.probes = select(others, splat(f.probes[first]), f.probes);
     }
     return f;
 }

@@ -91,26 +91,24 @@ struct TexelLanes {
     Lanes<T> r, g, b, a;
 };
 
-// How many reads at most one footprint takes along its long axis: a
-// surface seen at a slant is filtered as sharply as head-on up to a
-// footprint this many times longer than wide (GPUs offer 2 to 16).
+// How many reads at most one footprint takes along its length: a surface
+// seen at a slant is filtered as sharply as head-on up to a footprint this
+// many times longer than wide (GPUs offer 2 to 16).
 inline constexpr int kMaxProbes = 8;
 
 // A pixel's footprint on a texture where its ray hits, in (u, v) units
 // (render/texture_footprint.h): an ellipse, long across the image where
-// the surface is seen at a slant. With mipmaps it is read as `probes`
-// reads spaced evenly along its long axis (axis_u, axis_v: end to end),
-// each over a footprint of 2^lod -- the ellipse's width, or a kMaxProbes-th
-// of its length where that is more -- as GPUs' anisotropic filtering does;
-// without, once, over 2^lod_long, its length. -infinity: a point; NaN:
+// the surface is seen at a slant -- `length` along (axis_u, axis_v), end to
+// end, `width` across. A texture with mipmaps reads it as GPUs'
+// anisotropic filtering does: in reads spaced evenly along its length,
+// each over its width (at least a texel, at least a kMaxProbes-th of its
+// length); one without, once, over its length. length 0: a point; NaN:
 // none known; both read as magnified. +infinity: a grazing ray (the
 // smallest level).
 template <typename T>
 struct UvFootprint {
-    Lanes<T> lod = splat(-std::numeric_limits<T>::infinity());
-    Lanes<T> lod_long = splat(-std::numeric_limits<T>::infinity());
+    Lanes<T> length = splat(T(0)), width = splat(T(0));
     Lanes<T> axis_u = splat(T(0)), axis_v = splat(T(0));
-    Lanes<T> probes = splat(T(1));  // 1 to kMaxProbes, whole
 };
 
 // Per lane: floor(x).
@@ -186,11 +184,10 @@ struct Texture {
         return sample_minified<T>(u, v, lod);
     }
 
-    // The same over each lane's footprint `f`, along its long axis.
+    // The same over each lane's footprint `f`, along its length.
     template <typename T>
     FH_HOT_INLINE TexelLanes<T> sample(const Lanes<T>& u, const Lanes<T>& v, const UvFootprint<T>& f) const {
         if (!minifies()) return sample<T>(u, v);
-        if (mips == MipFilter::none) return sample_minified<T>(u, v, f.lod_long);
         return sample_along<T>(u, v, f);
     }
 
@@ -207,7 +204,54 @@ private:
     template <typename T>
     __attribute__((noinline)) TexelLanes<T> sample_minified(const Lanes<T>& u, const Lanes<T>& v,
                                                             const Lanes<T>& lod) const {
-        const Lanes<T> lambda = lod + T(0.5) * std::log2(T(image->width) * T(image->height));
+        return sample_levels<T>(u, v, lod + T(0.5) * std::log2(T(image->width) * T(image->height)));
+    }
+
+    // Reads i = 0 .. n - 1 at (i + 1/2) / n - 1/2 of the footprint's axis
+    // from (u, v), each a 1 / n share, at the level of the read's width in
+    // texels -- the footprint's, at least one texel (reads closer than a
+    // texel see what bilinear reads between them see), at least a
+    // kMaxProbes-th of the length -- n = ceil(length / that), less a
+    // hundredth (a footprint barely longer than wide is read once).
+    // Without mipmaps, one read at the level of its length. A lane's reads
+    // and sum are its own, whatever the other lanes ask for.
+    template <typename T>
+    __attribute__((noinline)) TexelLanes<T> sample_along(const Lanes<T>& u, const Lanes<T>& v,
+                                                         const UvFootprint<T>& f) const {
+        const T texels = std::sqrt(T(image->width) * T(image->height));
+        const Lanes<T> length = f.length * texels;
+        Lanes<T> lambda = splat(T(0)), reads = splat(T(1));
+        T most = 1;
+        for (int lane = 0; lane < kLanes<T>; ++lane) {
+            const T l = length[lane];
+            if (!(l > 0) || l == std::numeric_limits<T>::infinity() || mips == MipFilter::none) {
+                // A point (-infinity), none known (NaN), a grazing ray or no mipmaps.
+                lambda[lane] = std::log2(l);
+                continue;
+            }
+            T read = f.width[lane] * texels;
+            if (!(read >= l / T(kMaxProbes))) read = l / T(kMaxProbes);  // (and for NaN)
+            if (read < 1) read = 1;
+            lambda[lane] = read > 1 ? std::log2(read) : T(0);  // (0: magnified)
+            reads[lane] = std::min(T(kMaxProbes), std::ceil(l / read - T(0.01)));
+            most = std::max(most, reads[lane]);
+        }
+        if (most <= 1) return sample_levels<T>(u, v, lambda);
+        const Lanes<T> zero = splat(T(0)), share = T(1) / reads;
+        TexelLanes<T> sum{zero, zero, zero, zero};
+        for (int i = 0; i < int(most); ++i) {
+            const Lanes<T> weight = select(T(i) < reads, share, zero);
+            const Lanes<T> at = (T(i) + T(0.5)) * share - T(0.5);
+            const TexelLanes<T> c = sample_levels<T>(u + at * f.axis_u, v + at * f.axis_v, lambda);
+            sum = {sum.r + weight * c.r, sum.g + weight * c.g, sum.b + weight * c.b, sum.a + weight * c.a};
+        }
+        return sum;
+    }
+
+    // Each lane's read at level lambda: magnified where lambda <= 0 (or
+    // NaN), between the levels round it (minFilter) beyond.
+    template <typename T>
+    TexelLanes<T> sample_levels(const Lanes<T>& u, const Lanes<T>& v, const Lanes<T>& lambda) const {
         const LaneInts<T> far = lambda > T(0);  // false for NaN
         if (none(far)) return sample<T>(u, v);
         const int last = mips == MipFilter::none ? 0 : int(smaller->levels.size());
@@ -236,26 +280,6 @@ private:
         const TexelLanes<T> near = any(~far) ? sample<T>(u, v) : sum;
         return {select(far, sum.r, near.r), select(far, sum.g, near.g), select(far, sum.b, near.b),
                 select(far, sum.a, near.a)};
-    }
-
-    // Reads i = 0 .. probes - 1 at (i + 1/2) / probes - 1/2 of the axis
-    // from (u, v), each a 1 / probes share; a lane's reads and sum are its
-    // own, whatever the other lanes ask for.
-    template <typename T>
-    __attribute__((noinline)) TexelLanes<T> sample_along(const Lanes<T>& u, const Lanes<T>& v,
-                                                         const UvFootprint<T>& f) const {
-        T most = 1;
-        for (int lane = 0; lane < kLanes<T>; ++lane) most = std::max(most, f.probes[lane]);
-        if (most <= 1) return sample_minified<T>(u, v, f.lod);
-        const Lanes<T> zero = splat(T(0)), share = T(1) / f.probes;
-        TexelLanes<T> sum{zero, zero, zero, zero};
-        for (int i = 0; i < int(most); ++i) {
-            const Lanes<T> weight = select(T(i) < f.probes, share, zero);
-            const Lanes<T> at = (T(i) + T(0.5)) * share - T(0.5);
-            const TexelLanes<T> c = sample_minified<T>(u + at * f.axis_u, v + at * f.axis_v, f.lod);
-            sum = {sum.r + weight * c.r, sum.g + weight * c.g, sum.b + weight * c.b, sum.a + weight * c.a};
-        }
-        return sum;
     }
 
     template <typename T>

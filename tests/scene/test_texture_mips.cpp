@@ -209,59 +209,69 @@ TEST(Mipmaps, EachLaneReadsItsOwnLevels) {
     check(0.0f);
 }
 
-// Each lane's footprint `f`, one value: the read in lane 0 of a packet of it.
-double along(const Texture& t, double u, double v, double lod, double probes, double axis_u, double axis_v,
-             double lod_long = kInf) {
-    UvFootprint<double> f;
-    f.lod = splat(lod);
-    f.lod_long = splat(lod_long);
-    f.probes = splat(probes);
-    f.axis_u = splat(axis_u);
-    f.axis_v = splat(axis_v);
+// The read of a footprint `length` by `width` (u, v) units along (axis_u,
+// axis_v) at (u, v): lane 0 of a packet of it.
+double along(const Texture& t, double u, double v, double length, double width, double axis_u, double axis_v) {
+    const UvFootprint<double> f{splat(length), splat(width), splat(axis_u), splat(axis_v)};
     return t.sample<double>(splat(u), splat(v), f).r[0];
 }
 
 TEST(Mipmaps, ASlantedFootprintIsReadAlongItsLength) {
+    // (The 4 x 4 checker: a texel is 1/4 in u and v.)
     const Texture t = checker(MipFilter::linear);
-    // One read: the footprint's centre, as a read of its lod.
-    EXPECT_DOUBLE_EQ(along(t, kU, kV, -1.5, 1, 0.75, 0), t.sample<double>(splat(kU), splat(kV), splat(-1.5)).r[0]);
-    // Two reads a texel apart along u, magnified (bilinear): u = 1/16 and
-    // 3/16, a quarter of the way from texel 0 (0) towards its neighbours
-    // 3 (wrapped) and 1 (both 1): 0.25 each, where the centre reads 0.
-    EXPECT_DOUBLE_EQ(along(t, kU, kV, -kInf, 2, 0.25, 0), 0.25);
-    // The same along v: texels (0, 3) and (0, 1), both 1.
-    EXPECT_DOUBLE_EQ(along(t, kU, kV, -kInf, 2, 0, 0.25), 0.25);
-    // Three reads over 3 texels at lambda 0.5: at texels 3, 0 and 1 of
-    // row 0 (1, 0, 1), each half that texel and half level 1's grey.
-    EXPECT_NEAR(along(t, kU, kV, -1.5, 3, 0.75, 0), 0.5 * (2.0 / 3) + 0.5 * kGrey, 1e-6);
-    // Without mipmaps the footprint is read once, over its length
-    // (lod_long): minified, nearest, at u = 1/4 -- texel 1, where two
-    // reads at u = 3/16 and 5/16 would find texels 0 and 1.
+    // As long as wide, sqrt(2) texels: one read at lambda 0.5, as a read
+    // of lod -1.5.
+    EXPECT_NEAR(along(t, kU, kV, 0.25 * std::sqrt(2), 0.25 * std::sqrt(2), 0.25 * std::sqrt(2), 0),
+                t.sample(kU, kV, -1.5)[0], 1e-6);
+    // 2 texels long along u, a tenth of one wide: two reads a texel wide,
+    // magnified (bilinear), at u = 0 and 1/4 -- halfway between texel 0
+    // (0) and its neighbours 3 (wrapped) and 1 (both 1): 0.5 each, where
+    // the centre reads 0.
+    EXPECT_DOUBLE_EQ(along(t, kU, kV, 0.5, 0.025, 0.5, 0), 0.5);
+    // The same along v: rows 3 and 1, both 1.
+    EXPECT_DOUBLE_EQ(along(t, kU, kV, 0.5, 0.025, 0, 0.5), 0.5);
+    // Less than a texel long: one read, at the centre (reads closer than
+    // a texel would see what a bilinear read between them sees).
+    EXPECT_DOUBLE_EQ(along(t, kU, kV, 0.2, 0.0025, 0.2, 0), 0);
+    // 3 sqrt(2) texels long, sqrt(2) wide: three reads at lambda 0.5,
+    // sqrt(2) texels apart. Nearest within a level: texels 3, 0 and 1 of
+    // row 0 (1, 0, 1), each half that and half level 1's grey.
+    const Texture nearest = checker(MipFilter::linear, Filter::nearest);
+    const double r = 0.25 * std::sqrt(2);
+    EXPECT_NEAR(along(nearest, kU, kV, 3 * r, r, 3 * r, 0), 0.5 * (2.0 / 3) + 0.5 * kGrey, 1e-6);
+    // 8 times as long as wide or more: reads an eighth of the length wide.
+    // 64 texels long (lambda 3: level 2, the last) -- all grey.
+    EXPECT_NEAR(along(t, kU, kV, 16, 0.001, 16, 0), kGrey, 1e-6);
+    // Without mipmaps the footprint is read once, over its length: 128
+    // texels, minified, nearest, at u = 1/4 -- texel 1, where two reads
+    // at u = 3/16 and 5/16 would find texels 0 and 1. A point: magnified,
+    // bilinear, once.
     const Texture plain = checker(MipFilter::none, Filter::nearest);
-    EXPECT_DOUBLE_EQ(along(plain, 0.25, kV, -kInf, 2, 0.25, 0, 5), 1);
-    EXPECT_DOUBLE_EQ(along(plain, 0.25, kV, -kInf, 2, 0.25, 0, -kInf), 0.5);  // magnified: bilinear, once
+    EXPECT_DOUBLE_EQ(along(plain, 0.25, kV, 32, 0.25, 0.25, 0), 1);
+    EXPECT_DOUBLE_EQ(along(plain, 0.25, kV, 0, 0, 0, 0), 0.5);
 }
 
 TEST(Mipmaps, EachLaneReadsItsOwnFootprint) {
-    // Lanes of 1 to 8 reads, lambda from a point to a grazing ray, each
-    // read in its lane as alone -- to the bit, float and double.
+    // Lanes of 1 to 8 reads, from a point to a grazing ray, none known
+    // (NaN), each read in its lane as alone -- to the bit, float and
+    // double, and never NaN.
     const Texture t = checker(MipFilter::linear);
-    const double lods[] = {-kInf, -1.5, -1, 10, std::nan(""), -1.75, 0.3, -2};
+    const double inf = kInf, nan = std::nan("");
+    const double lengths[] = {0, 0.5, 0.3, 40, nan, inf, 3, 0.05};
     auto check = [&](auto zero) {
         using T = decltype(zero);
         Lanes<T> u, v;
         UvFootprint<T> f;
         for (int k = 0; k < kLanes<T>; ++k) {
             u[k] = T(0.05 + 0.1 * k), v[k] = T(0.9 - 0.1 * k);
-            f.lod[k] = T(lods[k % 8]);
-            f.probes[k] = T(1 + k % kMaxProbes);
-            f.axis_u[k] = T(0.3 * (k % 3)), f.axis_v[k] = T(-0.2 * (k % 2));
+            f.length[k] = T(lengths[k % 8]);
+            f.width[k] = T(lengths[k % 8] / (1 + k % 5));
+            f.axis_u[k] = T(0.6 * f.length[k] * (k % 2)), f.axis_v[k] = T(-0.8 * f.length[k] * (k % 2));
+            if (!std::isfinite(f.length[k])) f.axis_u[k] = f.axis_v[k] = 0;
         }
         const TexelLanes<T> all = t.sample<T>(u, v, f);
         for (int k = 0; k < kLanes<T>; ++k) {
-            UvFootprint<T> one;
-            one.lod = splat(f.lod[k]), one.probes = splat(f.probes[k]);
-            one.axis_u = splat(f.axis_u[k]), one.axis_v = splat(f.axis_v[k]);
+            const UvFootprint<T> one{splat(f.length[k]), splat(f.width[k]), splat(f.axis_u[k]), splat(f.axis_v[k])};
             const TexelLanes<T> alone = t.sample<T>(splat(u[k]), splat(v[k]), one);
             EXPECT_EQ(all.r[k], alone.r[0]) << "lane " << k;
             EXPECT_TRUE(std::isfinite(all.r[k])) << "lane " << k;
