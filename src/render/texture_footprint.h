@@ -46,12 +46,13 @@
 
 namespace fh {
 
-// The cone is as wide as its pixel, as the paper has it. Measured on a
-// checkerboard floor receding to the horizon (400 x 225, 1 sample,
-// against 256 samples; docs/gltf.md, "Textures"): 38.6 dB, against 37.5
-// at 0.85 of the pixel and 32.6 at 1.2. (Read at one level by the
-// footprint's length, before reads along it, 1/sqrt(2) of the pixel did
-// best: 28.2 dB.)
+// The cone is as wide as its pixel, as the paper has it. Measured at 1
+// sample against 256 (400 x 225; docs/gltf.md, "Textures"), a checkerboard
+// floor receding to the horizon gives 37.7 dB, against 36.3 at 0.85 of the
+// pixel, 31.3 at 1/sqrt(2) and 32.5 at 1.2; the glTF demo's frame 110 is
+// best at the full width too, BoxTextured (head-on faces) at 0.85 by 0.4
+// dB. (Read at one level by the footprint's length, before reads along
+// it, 1/sqrt(2) did best: 28.2 dB on the floor.)
 template <typename T>
 struct PixelCone {
     T width = 0;   // across a camera ray's pixel where it starts
