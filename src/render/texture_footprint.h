@@ -16,9 +16,8 @@
 // the ray -- falls on the face as an ellipse: w wide across the ray, w /
 // cos(theta) long along it. The texture maps the face to (u, v) linearly,
 // by the gradients of u and v along it, so the footprint in the image is
-// the ellipse those gradients make of it (for a map that shears or
-// stretches the image, a slanted one). It is worked out in the world, the
-// triangle's edges e1, e2 carried there by its instance's linear map L
+// the ellipse those gradients make of it. It is worked out in the world,
+// the triangle's edges e1, e2 carried there by its instance's linear map L
 // (any map: stretched, sheared, mirrored), face normal n = e1 x e2:
 //     a point p - v0 = a e1 + b e2 of the face has a = p . (e2 x n) / n.n,
 //     b = p . (n x e1) / n.n, and (u, v) - (u0, v0) = a (du1, dv1) +
@@ -27,13 +26,13 @@
 //     along the face for a ray along n), x2 = d x x1 across the ray too,
 //     which falls on the face at p2 = x2 - d (n . x2) / (n . d);
 //     the ellipse on the face has axes w x1 and w p2, end to end, and in
-//     the image g1 = w (gu . x1, gv . x1) and g2 = w (gu . p2, gv . p2).
-// Its length is the longer of |g1| and |g2| (the whole length for a map
-// that keeps angles, as most do, and close to it otherwise), its width
-// the area |g1 x g2| over that length. The texture reads it along the
-// longer one (scene/texture.h, UvFootprint). Where the ray grazes the face
-// (n . d = 0) the footprint is infinite (the smallest level); where the
-// triangle has no area in the image, a point; where it has none in the
+//     the image the conjugate diameters g1 = w (gu . x1, gv . x1) and
+//     g2 = w (gu . p2, gv . p2)
+// (its axes too where the map keeps angles, as most do). Each texture
+// finds the axes in its own texels (scene/texture.h, UvFootprint). Where
+// the ray grazes the face (n . d = 0) the footprint is infinite (the
+// smallest level); where the triangle's coordinates meet at one point, a
+// point; on a line, a line (read along it); where it has no area in the
 // world, unknown (read as magnified): never NaN from a real cone.
 #pragma once
 
@@ -105,24 +104,21 @@ __attribute__((noinline)) UvFootprint<T> footprint_on(const FlatGeometry<T>& mes
     const Vec3Lanes<T> p2 = x2 - d * (dot(normal, x2) / cosine);
     const Lanes<T> g1u = width * dot(gu, x1), g1v = width * dot(gv, x1);
     const Lanes<T> g2u = width * dot(gu, p2), g2v = width * dot(gv, p2);
-    const Lanes<T> long1 = g1u * g1u + g1v * g1v, long2 = g2u * g2u + g2v * g2v;
-    const Lanes<T> area = abs(g1u * g2v - g1v * g2u);
-
-    const LaneInts<T> second = long2 > long1;
-    const Lanes<T> length = sqrt(select(second, long2, long1));
-    const LaneInts<T> grazing = (cosine == T(0)) | (length == kInfinity<T>);
-    // A point in the image (0) or none in the world (NaN) keeps its length.
-    const LaneInts<T> real = ~grazing & (length > T(0));
+    // Not a real ellipse: grazing (+infinity), none in the world (NaN),
+    // or none in the image (0) -- see UvFootprint.
+    const LaneInts<T> grazing = cosine == T(0);
+    const Lanes<T> extent = abs(g1u) + abs(g1v) + abs(g2u) + abs(g2v);
+    const LaneInts<T> real = ~grazing & (extent > T(0)) & (extent < kInfinity<T>);
     const Lanes<T> zero = splat(T(0));
-    UvFootprint<T> f{select(grazing, splat(kInfinity<T>), length), select(real, area / length, zero),
-                     select(real, select(second, g2u, g1u), zero), select(real, select(second, g2v, g1v), zero)};
+    UvFootprint<T> f{select(real, g1u, select(grazing | (extent == kInfinity<T>), splat(kInfinity<T>), extent)),
+                     select(real, g1v, zero), select(real, g2u, zero), select(real, g2v, zero)};
     if (const unsigned bits = lane_bits(lanes)) {
         const int first = __builtin_ctz(bits);
         const LaneInts<T> others = ~lanes;
-        f.length = select(others, splat(f.length[first]), f.length);
-        f.width = select(others, splat(f.width[first]), f.width);
-        f.axis_u = select(others, splat(f.axis_u[first]), f.axis_u);
-        f.axis_v = select(others, splat(f.axis_v[first]), f.axis_v);
+        f.g1u = select(others, splat(f.g1u[first]), f.g1u);
+        f.g1v = select(others, splat(f.g1v[first]), f.g1v);
+        f.g2u = select(others, splat(f.g2u[first]), f.g2u);
+        f.g2v = select(others, splat(f.g2v[first]), f.g2v);
     }
     return f;
 }

@@ -98,17 +98,19 @@ inline constexpr int kMaxProbes = 8;
 
 // A pixel's footprint on a texture where its ray hits, in (u, v) units
 // (render/texture_footprint.h): an ellipse, long across the image where
-// the surface is seen at a slant -- `length` along (axis_u, axis_v), end to
-// end, `width` across. A texture with mipmaps reads it as GPUs'
-// anisotropic filtering does: in reads spaced evenly along its length,
-// each over its width (at least a texel, at least a kMaxProbes-th of its
-// length); one without, once, over its length. length 0: a point; NaN:
-// none known; both read as magnified. +infinity: a grazing ray (the
-// smallest level).
+// the surface is seen at a slant, given by two of its diameters that are
+// conjugate (the images of two perpendicular diameters of a circle), end
+// to end: (g1u, g1v) and (g2u, g2v). Each texture finds its axes in its
+// own texels (a w x h image's texels are 1/w by 1/h), and with mipmaps
+// reads it as GPUs' anisotropic filtering does: in reads spaced evenly
+// along its length, each over its width (at least a texel, at least a
+// kMaxProbes-th of its length); without, once, over its length. A lane
+// whose footprint is not a real ellipse has g1u = 0 (a point), NaN (none
+// known: both read as magnified) or +infinity (a grazing ray: the
+// smallest level), and the other three 0.
 template <typename T>
 struct UvFootprint {
-    Lanes<T> length = splat(T(0)), width = splat(T(0));
-    Lanes<T> axis_u = splat(T(0)), axis_v = splat(T(0));
+    Lanes<T> g1u = splat(T(0)), g1v = splat(T(0)), g2u = splat(T(0)), g2v = splat(T(0));
 };
 
 // Per lane: floor(x).
@@ -207,10 +209,10 @@ private:
         return sample_levels<T>(u, v, lod + T(0.5) * std::log2(T(image->width) * T(image->height)));
     }
 
-    // Reads i = 0 .. n - 1 at (i + 1/2) / n - 1/2 of the footprint's axis
-    // from (u, v), each a 1 / n share, at the level of the read's width in
-    // texels -- the footprint's, at least one texel (reads closer than a
-    // texel see what bilinear reads between them see), at least a
+    // Reads i = 0 .. n - 1 at (i + 1/2) / n - 1/2 of the footprint's long
+    // axis from (u, v), each a 1 / n share, at the level of the read's
+    // width in texels -- the footprint's, at least one texel (reads closer
+    // than a texel see what bilinear reads between them see), at least a
     // kMaxProbes-th of the length -- n = ceil(length / that), less a
     // hundredth (a footprint barely longer than wide is read once).
     // Without mipmaps, one read at the level of its length. A lane's reads
@@ -218,23 +220,41 @@ private:
     template <typename T>
     __attribute__((noinline)) TexelLanes<T> sample_along(const Lanes<T>& u, const Lanes<T>& v,
                                                          const UvFootprint<T>& f) const {
-        const T texels = std::sqrt(T(image->width) * T(image->height));
-        const Lanes<T> length = f.length * texels;
-        Lanes<T> lambda = splat(T(0)), reads = splat(T(1));
+        const T w = T(image->width), h = T(image->height);
+        Lanes<T> lambda = splat(T(0)), reads = splat(T(1)), axis_u = splat(T(0)), axis_v = splat(T(0));
         T most = 1;
         for (int lane = 0; lane < kLanes<T>; ++lane) {
-            const T l = length[lane];
-            if (!(l > 0) || l == std::numeric_limits<T>::infinity() || mips == MipFilter::none) {
-                // A point (-infinity), none known (NaN), a grazing ray or no mipmaps.
-                lambda[lane] = std::log2(l);
+            // The diameters in texels, and the ellipse's axes: the
+            // eigenvalues and vectors of G G^T, G = (g1 g2) (scaled by
+            // their largest entry first, so that no square overflows).
+            const T au = f.g1u[lane] * w, av = f.g1v[lane] * h, bu = f.g2u[lane] * w, bv = f.g2v[lane] * h;
+            const T extent = std::abs(au) + std::abs(av) + std::abs(bu) + std::abs(bv);
+            if (!(extent > 0) || extent == std::numeric_limits<T>::infinity()) {
+                lambda[lane] = std::log2(extent);  // -infinity, NaN or +infinity: see UvFootprint
                 continue;
             }
-            T read = f.width[lane] * texels;
-            if (!(read >= l / T(kMaxProbes))) read = l / T(kMaxProbes);  // (and for NaN)
+            const T scale = std::max({std::abs(au), std::abs(av), std::abs(bu), std::abs(bv)});
+            const T x1 = au / scale, y1 = av / scale, x2 = bu / scale, y2 = bv / scale;
+            const T a = x1 * x1 + x2 * x2, b = x1 * y1 + x2 * y2, c = y1 * y1 + y2 * y2;
+            const T longest = T(0.5) * (a + c) + std::sqrt(T(0.25) * (a - c) * (a - c) + b * b);
+            const T length = scale * std::sqrt(longest);
+            if (mips == MipFilter::none) {
+                lambda[lane] = std::log2(length);
+                continue;
+            }
+            T read = scale * std::abs(x1 * y2 - y1 * x2) / std::sqrt(longest);  // the width
+            if (!(read >= length / T(kMaxProbes))) read = length / T(kMaxProbes);
             if (read < 1) read = 1;
             lambda[lane] = read > 1 ? std::log2(read) : T(0);  // (0: magnified)
-            reads[lane] = std::min(T(kMaxProbes), std::ceil(l / read - T(0.01)));
+            reads[lane] = std::min(T(kMaxProbes), std::ceil(length / read - T(0.01)));
+            if (reads[lane] <= 1) continue;
             most = std::max(most, reads[lane]);
+            // The long axis (a >= c: (longest - c, b), else (b, longest - a)), back in (u, v).
+            const T ex = a >= c ? longest - c : b, ey = a >= c ? b : longest - a;
+            const T norm = std::sqrt(ex * ex + ey * ey);
+            if (!(norm > 0)) continue;  // (a circle: never more than one read)
+            axis_u[lane] = length * ex / norm / w;
+            axis_v[lane] = length * ey / norm / h;
         }
         if (most <= 1) return sample_levels<T>(u, v, lambda);
         const Lanes<T> zero = splat(T(0)), share = T(1) / reads;
@@ -242,7 +262,7 @@ private:
         for (int i = 0; i < int(most); ++i) {
             const Lanes<T> weight = select(T(i) < reads, share, zero);
             const Lanes<T> at = (T(i) + T(0.5)) * share - T(0.5);
-            const TexelLanes<T> c = sample_levels<T>(u + at * f.axis_u, v + at * f.axis_v, lambda);
+            const TexelLanes<T> c = sample_levels<T>(u + at * axis_u, v + at * axis_v, lambda);
             sum = {sum.r + weight * c.r, sum.g + weight * c.g, sum.b + weight * c.b, sum.a + weight * c.a};
         }
         return sum;

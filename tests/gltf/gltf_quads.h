@@ -40,6 +40,13 @@ inline std::string num(double x) {
     return buf;
 }
 
+// Numbers as a JSON array.
+inline std::string numbers(const std::vector<double>& xs) {
+    std::string s = "[";
+    for (size_t k = 0; k < xs.size(); ++k) s += (k ? ", " : "") + num(xs[k]);
+    return s + "]";
+}
+
 // ------------------------------------------------------------------ images
 
 inline std::string as_string(const std::vector<std::uint8_t>& v) { return std::string(v.begin(), v.end()); }
@@ -100,6 +107,7 @@ struct Quad {
     double stretch = 1;              // and its node's further scale along x (x divided by it too)
     double lift = 1;                 // and along its normal (z divided by it too)
     double tilt = 0;                 // its node's turn about x, degrees: the y1 edge up, for tilt > 0
+    std::vector<double> matrix;      // or its node's matrix (16 numbers, the file's, column by column)
     bool uvs = true;                 // TEXCOORD_0
     std::vector<float> uv1;          // TEXCOORD_1 (8 numbers), or none
     bool normals = false;            // NORMAL: up, at every vertex
@@ -182,7 +190,7 @@ inline std::string quads_body(Bin& bin, const std::vector<Quad>& quads, const st
                       ? ", \"scale\": [" + num(s * q.stretch) + ", " + num(s * q.lift) + ", " + num(s) + "]"
                       : "") +
                  (q.tilt != 0 ? ", \"rotation\": [" + num(std::sin(half)) + ", 0, 0, " + num(std::cos(half)) + "]" : "") +
-                 "}";
+                 (q.matrix.empty() ? "" : ", \"matrix\": " + numbers(q.matrix)) + "}";
         scene += std::string(scene.empty() ? "" : ", ") + std::to_string(k);
     }
     return "\"scenes\": [{\"nodes\": [" + scene + "]}], \"nodes\": [" + nodes + "],\n\"meshes\": [" + meshes +

@@ -27,6 +27,7 @@
 
 #include "gltf/gltf_quads.h"
 #include "images/png_writer.h"
+#include "render/texture_footprint.h"
 
 namespace fh {
 namespace gltf_mipmaps_test {
@@ -162,7 +163,7 @@ TEST(GltfMipmaps, LambdaPicksTheLevel) {
     // there, 0.8 of texel i (stripe i) and 0.2 of texel i + 1. Linear:
     // white columns (odd i) 0.8 * 204 = 163.2 -> 163, black ones (even i)
     // 0.2 * 204 = 40.8 -> 41. A tenth of a level more would blend in a
-    // tenth of level 4's grey (157 and 46).
+    // tenth of level 4's grey (157 and 47).
     //
     // The same quad, its node stretched 2 or 1/4 along x (its positions'
     // x divided by that): the same world, the same footprint, the same
@@ -233,6 +234,95 @@ TEST(GltfMipmaps, ASlantedQuadIsReadAlongItsLength) {
     }
 }
 
+TEST(GltfMipmaps, ANonSquareTextureIsReadInItsTexels) {
+    // 128 x 64 texels on the square quad, in vertical stripes 16 wide: a
+    // pixel's footprint, 1/8 of the image each way, is 16 texels along u
+    // and 8 along v -- two reads along u at lambda 3, at u -+ 4/128. Level
+    // 3 (16 x 8) has stripes 2 wide; column i (u * 16 = 1.4 + 2 i) reads
+    // it at 0.9 + 2 i, all stripe i, and 1.9 + 2 i, 0.6 of stripe i and
+    // 0.4 of stripe i + 1: 0.8 and 0.2 together -- 163 and 41. Measured in
+    // (u, v) the footprint would be round: one read at lambda 3.5, 0.9 and
+    // 0.1 (184 and 20).
+    const std::string json = quads_file({{-1, 1, -0.99, 1.01, 0, 0}},
+                                        surfaces({material("[1, 1, 1, 1]", tex(0))}, {{0, 0}},
+                                                 {image_json([] {
+                                                     Image im(128, 64);
+                                                     for (size_t k = 0; k < im.rgb.size(); ++k)
+                                                         im.rgb[k] = (k / 3 % 128 / 16) % 2 ? 255 : 0;
+                                                     return as_string(encode_png(im));
+                                                 }())},
+                                                 {sampler_json(kRepeat, kRepeat)}));
+    for (Precision p : kPrecisions) {
+        const Image im = top_view(lit(json), p);
+        for (int i = 0; i < 8; ++i) {
+            const int v = i % 2 ? 163 : 41;
+            for (int j = 0; j < 8; ++j) expect_pixel(im, i, j, {v, v, v}, precision_name(p));
+        }
+    }
+}
+
+TEST(GltfMipmaps, TheFootprintIsTheConesShadowUnderAnyNodeMatrix) {
+    // The quad placed by a node matrix that turns, shears and stretches
+    // (and, negated, mirrors): footprint_on's ellipse against one found
+    // the long way -- points of the cone's round cross-section carried
+    // along the ray onto the quad's plane in the world, and into (u, v)
+    // by the quad's own corners there. For the diameters g1, g2 of any
+    // ellipse, the points' mean of p p^T is (g1 g1^T + g2 g2^T) / 8, which
+    // the two must agree on, for rays from every side. A map taken the
+    // wrong way round (L^T for L) gives another ellipse.
+    for (const double sign : {1.0, -1.0}) {
+        Quad q{-1, 1, -0.99, 1.01, 0, 0};
+        q.matrix = {1.3 * sign, 0.1, -0.3, 0, 0.4, 0.7, 0.2, 0, -0.2, 0.5, 1.1, 0, 0.5, -0.2, 0.3, 1};
+        const Scene s = z_up(striped(q));
+        const auto flat = FlatScene<double>::build(s, plan_effects(s, Effects{}, 5));
+        ASSERT_TRUE(flat.instances != nullptr);
+        const FlatInstance<double>& instance = flat.instances->instances[0];
+        const FlatGeometry<double>& mesh = *flat.instances->meshes[size_t(instance.mesh)];
+        // The quad's corners and their (u, v) in the world: the uv map of
+        // its plane, u = u0 + (p - c0) . gu and so on.
+        const Mesh& m = *s.meshes[0].mesh;
+        const auto& t = m.triangles[0];
+        dvec3 c[3];
+        for (int k = 0; k < 3; ++k) c[k] = dvec3(s.instances[0].to_world * glm::dvec4(m.positions[t[size_t(k)]], 1));
+        const dvec3 e1 = c[1] - c[0], e2 = c[2] - c[0], n = glm::cross(e1, e2);
+        const dvec2 d1 = m.uvs[t[1]] - m.uvs[t[0]], d2 = m.uvs[t[2]] - m.uvs[t[0]];
+        auto uv_of = [&](const dvec3& p) {  // (u, v) - (u0, v0) at p on the plane, by Cramer's rule
+            const double a = glm::dot(glm::cross(p - c[0], e2), n) / glm::dot(n, n);
+            const double b = glm::dot(glm::cross(e1, p - c[0]), n) / glm::dot(n, n);
+            return a * d1 + b * d2;
+        };
+        const double width = 0.01;
+        Vec3Lanes<double> direction;
+        for (int k = 0; k < kLanes<double>; ++k) {
+            const dvec3 d = glm::normalize(dvec3(std::sin(1.3 * k + 0.2), std::cos(0.7 * k + 0.5), 0.4 * k - 1.5));
+            direction.x[k] = d.x, direction.y[k] = d.y, direction.z[k] = d.z;
+        }
+        for (const int prim : {0, 1}) {
+            const UvFootprint<double> f =
+                footprint_on(mesh, prim, instance, direction, splat(width), first_lanes<double>(kLanes<double>));
+            for (int k = 0; k < kLanes<double>; ++k) {
+                const dvec3 d(direction.x[k], direction.y[k], direction.z[k]);
+                const dvec3 s1 = glm::normalize(glm::cross(d, dvec3(0.3, 0.5, 0.8))), s2 = glm::cross(d, s1);
+                const dvec3 centre = (c[0] + c[1] + c[2]) / 3.0;
+                double mean[3] = {0, 0, 0};  // of p_u^2, p_u p_v, p_v^2
+                const int points = 16;
+                for (int i = 0; i < points; ++i) {
+                    const double phi = 2 * kPi * i / points;
+                    const dvec3 q0 = centre + 0.5 * width * (std::cos(phi) * s1 + std::sin(phi) * s2);
+                    const dvec3 on = q0 + d * (glm::dot(n, centre - q0) / glm::dot(n, d));
+                    const dvec2 p = uv_of(on) - uv_of(centre);
+                    mean[0] += p.x * p.x / points, mean[1] += p.x * p.y / points, mean[2] += p.y * p.y / points;
+                }
+                const double g[3] = {f.g1u[k] * f.g1u[k] + f.g2u[k] * f.g2u[k], f.g1u[k] * f.g1v[k] + f.g2u[k] * f.g2v[k],
+                                     f.g1v[k] * f.g1v[k] + f.g2v[k] * f.g2v[k]};
+                const double scale = 8 * (mean[0] + mean[2]);
+                for (int e = 0; e < 3; ++e)
+                    EXPECT_NEAR(g[e], 8 * mean[e], 1e-9 * scale) << "sign " << sign << ", prim " << prim << ", lane " << k;
+            }
+        }
+    }
+}
+
 TEST(GltfMipmaps, APerspectiveCameraReadsTheSameMean) {
     // The eye 10 above the quad, the image plane at 9: the cone is
     // 0.25 / 9 * 10 wide there, lambda = 3.15 -- levels 3 and 4, both the
@@ -282,7 +372,7 @@ TEST(GltfMipmaps, SupersamplingNarrowsTheCone) {
 }
 
 TEST(GltfMipmaps, RefinedPixelsNarrowTheConeAsUniformSamplesDo) {
-    // Adaptive anti-aliasing gives the stripes' pixels (each 164 from its
+    // Adaptive anti-aliasing gives the stripes' pixels (each 122 from its
     // neighbours) 4 stratified samples instead of 1: each stands for half
     // the pixel, as in a frame of 4 samples a pixel -- the same pixels. A
     // refined pixel's cone left a whole pixel wide would read level 3

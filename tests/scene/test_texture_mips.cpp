@@ -209,46 +209,65 @@ TEST(Mipmaps, EachLaneReadsItsOwnLevels) {
     check(0.0f);
 }
 
-// The read of a footprint `length` by `width` (u, v) units along (axis_u,
-// axis_v) at (u, v): lane 0 of a packet of it.
-double along(const Texture& t, double u, double v, double length, double width, double axis_u, double axis_v) {
-    const UvFootprint<double> f{splat(length), splat(width), splat(axis_u), splat(axis_v)};
+// The read at (u, v) of the footprint whose conjugate diameters are
+// (g1u, g1v) and (g2u, g2v): lane 0 of a packet of it.
+double along(const Texture& t, double u, double v, double g1u, double g1v, double g2u, double g2v) {
+    const UvFootprint<double> f{splat(g1u), splat(g1v), splat(g2u), splat(g2v)};
     return t.sample<double>(splat(u), splat(v), f).r[0];
 }
 
 TEST(Mipmaps, ASlantedFootprintIsReadAlongItsLength) {
     // (The 4 x 4 checker: a texel is 1/4 in u and v.)
     const Texture t = checker(MipFilter::linear);
-    // As long as wide, sqrt(2) texels: one read at lambda 0.5, as a read
-    // of lod -1.5.
-    EXPECT_NEAR(along(t, kU, kV, 0.25 * std::sqrt(2), 0.25 * std::sqrt(2), 0.25 * std::sqrt(2), 0),
-                t.sample(kU, kV, -1.5)[0], 1e-6);
+    const double r = 0.25 * std::sqrt(2);
+    // A circle sqrt(2) texels across: one read at lambda 0.5, as a read of
+    // lod -1.5.
+    EXPECT_NEAR(along(t, kU, kV, r, 0, 0, r), t.sample(kU, kV, -1.5)[0], 1e-6);
     // 2 texels long along u, a tenth of one wide: two reads a texel wide,
     // magnified (bilinear), at u = 0 and 1/4 -- halfway between texel 0
     // (0) and its neighbours 3 (wrapped) and 1 (both 1): 0.5 each, where
     // the centre reads 0.
-    EXPECT_DOUBLE_EQ(along(t, kU, kV, 0.5, 0.025, 0.5, 0), 0.5);
+    EXPECT_DOUBLE_EQ(along(t, kU, kV, 0.5, 0, 0, 0.025), 0.5);
     // The same along v: rows 3 and 1, both 1.
-    EXPECT_DOUBLE_EQ(along(t, kU, kV, 0.5, 0.025, 0, 0.5), 0.5);
+    EXPECT_DOUBLE_EQ(along(t, kU, kV, 0.025, 0, 0, 0.5), 0.5);
     // Less than a texel long: one read, at the centre (reads closer than
     // a texel would see what a bilinear read between them sees).
-    EXPECT_DOUBLE_EQ(along(t, kU, kV, 0.2, 0.0025, 0.2, 0), 0);
+    EXPECT_DOUBLE_EQ(along(t, kU, kV, 0.2, 0, 0, 0.0025), 0);
     // 3 sqrt(2) texels long, sqrt(2) wide: three reads at lambda 0.5,
     // sqrt(2) texels apart. Nearest within a level: texels 3, 0 and 1 of
     // row 0 (1, 0, 1), each half that and half level 1's grey.
     const Texture nearest = checker(MipFilter::linear, Filter::nearest);
-    const double r = 0.25 * std::sqrt(2);
-    EXPECT_NEAR(along(nearest, kU, kV, 3 * r, r, 3 * r, 0), 0.5 * (2.0 / 3) + 0.5 * kGrey, 1e-6);
+    EXPECT_NEAR(along(nearest, kU, kV, 3 * r, 0, 0, r), 0.5 * (2.0 / 3) + 0.5 * kGrey, 1e-6);
     // 8 times as long as wide or more: reads an eighth of the length wide.
     // 64 texels long (lambda 3: level 2, the last) -- all grey.
-    EXPECT_NEAR(along(t, kU, kV, 16, 0.001, 16, 0), kGrey, 1e-6);
+    EXPECT_NEAR(along(t, kU, kV, 16, 0, 0, 0.001), kGrey, 1e-6);
     // Without mipmaps the footprint is read once, over its length: 128
     // texels, minified, nearest, at u = 1/4 -- texel 1, where two reads
     // at u = 3/16 and 5/16 would find texels 0 and 1. A point: magnified,
     // bilinear, once.
     const Texture plain = checker(MipFilter::none, Filter::nearest);
-    EXPECT_DOUBLE_EQ(along(plain, 0.25, kV, 32, 0.25, 0.25, 0), 1);
+    EXPECT_DOUBLE_EQ(along(plain, 0.25, kV, 32, 0, 0, 0.25), 1);
     EXPECT_DOUBLE_EQ(along(plain, 0.25, kV, 0, 0, 0, 0), 0.5);
+}
+
+TEST(Mipmaps, AFootprintsAxesAreFoundFromAnyTwoConjugateDiameters) {
+    // An ellipse 4 texels long along u and 1 wide, given by the conjugate
+    // diameters (4 cos 45, sin 45) and (-4 sin 45, cos 45) texels: its
+    // axes, not the longer of those (2.9 texels, diagonal), are read -- 4
+    // reads along u, 1.5 and 0.5 texels either side of texel 0's centre.
+    // On stripes one texel wide along u (0 1 0 1) each read, magnified
+    // (bilinear), falls halfway between two texels: 0.5. (3 reads along
+    // the diagonal would give about 0.63; one, 0.)
+    std::vector<int> g;
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) g.push_back(i % 2 ? 255 : 0);
+    Texture t;
+    t.image = grey_image(4, 4, g);
+    t.srgb = false;
+    t.mips = MipFilter::linear;
+    t.smaller = mip_chain(*t.image, false);
+    const double c = std::sqrt(0.5) / 4;  // cos 45 = sin 45, in (u, v) units
+    EXPECT_NEAR(along(t, kU, kV, 4 * c, c, -4 * c, c), 0.5, 1e-12);
 }
 
 TEST(Mipmaps, EachLaneReadsItsOwnFootprint) {
@@ -264,14 +283,16 @@ TEST(Mipmaps, EachLaneReadsItsOwnFootprint) {
         UvFootprint<T> f;
         for (int k = 0; k < kLanes<T>; ++k) {
             u[k] = T(0.05 + 0.1 * k), v[k] = T(0.9 - 0.1 * k);
-            f.length[k] = T(lengths[k % 8]);
-            f.width[k] = T(lengths[k % 8] / (1 + k % 5));
-            f.axis_u[k] = T(0.6 * f.length[k] * (k % 2)), f.axis_v[k] = T(-0.8 * f.length[k] * (k % 2));
-            if (!std::isfinite(f.length[k])) f.axis_u[k] = f.axis_v[k] = 0;
+            const double l = lengths[k % 8];
+            f.g1u[k] = T(l);
+            if (std::isfinite(l)) {
+                f.g1v[k] = T(0.3 * l * (k % 3));
+                f.g2u[k] = T(-0.1 * l), f.g2v[k] = T(l / (1 + k % 5));
+            }
         }
         const TexelLanes<T> all = t.sample<T>(u, v, f);
         for (int k = 0; k < kLanes<T>; ++k) {
-            const UvFootprint<T> one{splat(f.length[k]), splat(f.width[k]), splat(f.axis_u[k]), splat(f.axis_v[k])};
+            const UvFootprint<T> one{splat(f.g1u[k]), splat(f.g1v[k]), splat(f.g2u[k]), splat(f.g2v[k])};
             const TexelLanes<T> alone = t.sample<T>(splat(u[k]), splat(v[k]), one);
             EXPECT_EQ(all.r[k], alone.r[0]) << "lane " << k;
             EXPECT_TRUE(std::isfinite(all.r[k])) << "lane " << k;
