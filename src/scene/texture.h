@@ -13,11 +13,12 @@
 // Seen from far away, where a pixel covers many texels, a texture is read
 // from its mipmaps (glTF's minFilter): the image halved again and again
 // down to one texel, each level the box average of the one above in linear
-// values. Which level: lambda = log2 of the pixel's footprint in texels, as
-// a ray cone finds it (render/texture_footprint.h); LINEAR_MIPMAP_LINEAR
-// blends the two levels round lambda (trilinear). Where lambda <= 0 the
-// texture is magnified and read as without mipmaps (docs/gltf.md,
-// "Textures").
+// values. The pixel's footprint, as a ray cone finds it
+// (render/texture_footprint.h), is an ellipse: it is read in reads along
+// its length, and each read's level is lambda = log2 of its width in
+// texels (UvFootprint); LINEAR_MIPMAP_LINEAR blends the two levels round
+// lambda (trilinear). Where lambda <= 0 the texture is magnified and read
+// as without mipmaps (docs/gltf.md, "Textures").
 #pragma once
 
 #include <algorithm>
@@ -220,50 +221,54 @@ private:
     template <typename T>
     __attribute__((noinline)) TexelLanes<T> sample_along(const Lanes<T>& u, const Lanes<T>& v,
                                                          const UvFootprint<T>& f) const {
+        // The diameters in texels, and the ellipse's axes: the eigenvalues
+        // and vectors of G G^T, G = (g1 g2) (scaled by their largest entry
+        // first, so that no square overflows). All lanes at once; the
+        // logarithm only where a lane needs one.
         const T w = T(image->width), h = T(image->height);
-        Lanes<T> lambda = splat(T(0)), reads = splat(T(1)), axis_u = splat(T(0)), axis_v = splat(T(0));
+        const Lanes<T> au = f.g1u * w, av = f.g1v * h, bu = f.g2u * w, bv = f.g2v * h;
+        const Lanes<T> extent = abs(au) + abs(av) + abs(bu) + abs(bv);
+        const LaneInts<T> real = (extent > T(0)) & (extent < std::numeric_limits<T>::infinity());
+        const Lanes<T> one = splat(T(1)), zero = splat(T(0));
+        const Lanes<T> scale = select(real, max(max(abs(au), abs(av)), max(abs(bu), abs(bv))), one);
+        const Lanes<T> x1 = au / scale, y1 = av / scale, x2 = bu / scale, y2 = bv / scale;
+        const Lanes<T> a = x1 * x1 + x2 * x2, b = x1 * y1 + x2 * y2, c = y1 * y1 + y2 * y2;
+        const Lanes<T> longest = T(0.5) * (a + c) + sqrt(T(0.25) * (a - c) * (a - c) + b * b);
+        const Lanes<T> length = scale * sqrt(longest);
+        const Lanes<T> across = scale * abs(x1 * y2 - y1 * x2) / sqrt(longest);  // the width
+        Lanes<T> read = select(across >= length / T(kMaxProbes), across, length / T(kMaxProbes));  // (NaN too)
+        read = max(read, one);
+        const bool mipmapped = mips != MipFilter::none;
+        const LaneInts<T> several = real & (length / read - T(0.01) > one);
+        Lanes<T> reads = select(several, min(splat(T(kMaxProbes)), -floor_lanes<T>(T(0.01) - length / read)), one);
+        if (!mipmapped) reads = one;
+        // Where to take a logarithm: none known, a point or a grazing ray
+        // (of the extent, NaN, 0 or +infinity: see UvFootprint); without
+        // mipmaps, of the length; with, of a read wider than a texel.
+        const Lanes<T> of = select(real, mipmapped ? read : length, extent);
+        const LaneInts<T> logarithm = ~real | (mipmapped ? read > one : real);
+        Lanes<T> lambda = zero;  // (0: magnified)
+        for_each_lane(logarithm, [&](int lane) {
+            lambda[lane] = std::log2(of[lane]);
+            return false;
+        });
+        // The long axis (a >= c: (longest - c, b), else (b, longest - a)), back in (u, v).
+        const LaneInts<T> wide = a >= c;
+        const Lanes<T> ex = select(wide, longest - c, b), ey = select(wide, b, longest - a);
+        const Lanes<T> norm = sqrt(ex * ex + ey * ey);
+        const LaneInts<T> along = (reads > one) & (norm > T(0));  // (a circle: never more than one read)
+        const Lanes<T> axis_u = select(along, length * ex / norm / w, zero);
+        const Lanes<T> axis_v = select(along, length * ey / norm / h, zero);
         T most = 1;
-        for (int lane = 0; lane < kLanes<T>; ++lane) {
-            // The diameters in texels, and the ellipse's axes: the
-            // eigenvalues and vectors of G G^T, G = (g1 g2) (scaled by
-            // their largest entry first, so that no square overflows).
-            const T au = f.g1u[lane] * w, av = f.g1v[lane] * h, bu = f.g2u[lane] * w, bv = f.g2v[lane] * h;
-            const T extent = std::abs(au) + std::abs(av) + std::abs(bu) + std::abs(bv);
-            if (!(extent > 0) || extent == std::numeric_limits<T>::infinity()) {
-                lambda[lane] = std::log2(extent);  // -infinity, NaN or +infinity: see UvFootprint
-                continue;
-            }
-            const T scale = std::max({std::abs(au), std::abs(av), std::abs(bu), std::abs(bv)});
-            const T x1 = au / scale, y1 = av / scale, x2 = bu / scale, y2 = bv / scale;
-            const T a = x1 * x1 + x2 * x2, b = x1 * y1 + x2 * y2, c = y1 * y1 + y2 * y2;
-            const T longest = T(0.5) * (a + c) + std::sqrt(T(0.25) * (a - c) * (a - c) + b * b);
-            const T length = scale * std::sqrt(longest);
-            if (mips == MipFilter::none) {
-                lambda[lane] = std::log2(length);
-                continue;
-            }
-            T read = scale * std::abs(x1 * y2 - y1 * x2) / std::sqrt(longest);  // the width
-            if (!(read >= length / T(kMaxProbes))) read = length / T(kMaxProbes);
-            if (read < 1) read = 1;
-            lambda[lane] = read > 1 ? std::log2(read) : T(0);  // (0: magnified)
-            reads[lane] = std::min(T(kMaxProbes), std::ceil(length / read - T(0.01)));
-            if (reads[lane] <= 1) continue;
-            most = std::max(most, reads[lane]);
-            // The long axis (a >= c: (longest - c, b), else (b, longest - a)), back in (u, v).
-            const T ex = a >= c ? longest - c : b, ey = a >= c ? b : longest - a;
-            const T norm = std::sqrt(ex * ex + ey * ey);
-            if (!(norm > 0)) continue;  // (a circle: never more than one read)
-            axis_u[lane] = length * ex / norm / w;
-            axis_v[lane] = length * ey / norm / h;
-        }
+        for (int lane = 0; lane < kLanes<T>; ++lane) most = std::max(most, reads[lane]);
         if (most <= 1) return sample_levels<T>(u, v, lambda);
-        const Lanes<T> zero = splat(T(0)), share = T(1) / reads;
+        const Lanes<T> share = T(1) / reads;
         TexelLanes<T> sum{zero, zero, zero, zero};
         for (int i = 0; i < int(most); ++i) {
             const Lanes<T> weight = select(T(i) < reads, share, zero);
             const Lanes<T> at = (T(i) + T(0.5)) * share - T(0.5);
-            const TexelLanes<T> c = sample_levels<T>(u + at * axis_u, v + at * axis_v, lambda);
-            sum = {sum.r + weight * c.r, sum.g + weight * c.g, sum.b + weight * c.b, sum.a + weight * c.a};
+            const TexelLanes<T> t = sample_levels<T>(u + at * axis_u, v + at * axis_v, lambda);
+            sum = {sum.r + weight * t.r, sum.g + weight * t.g, sum.b + weight * t.b, sum.a + weight * t.a};
         }
         return sum;
     }
