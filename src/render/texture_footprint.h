@@ -1,5 +1,5 @@
-// How much of a texture one pixel covers where its ray hits: the level of
-// detail that picks a texture's mipmap (scene/texture.h). A ray cone (after
+// How much of a texture one pixel covers where its ray hits: the ellipse
+// a texture's mipmaps are read over (scene/texture.h). A ray cone (after
 // Akenine-Möller et al., "Texture Level of Detail Strategies for Real-Time
 // Ray Tracing", Ray Tracing Gems, 2019): each camera ray stands for a cone
 // as wide as its pixel, whose width at distance t is

@@ -177,8 +177,8 @@ struct Texture {
         return sample_level<T>(image->rgba.data(), image->width, image->height, filter, u, v);
     }
 
-    // The same where each lane's pixel covers a footprint of 2^lod in
-    // (u, v) units (render/texture_footprint.h; -infinity or NaN: a point,
+    // The same where each lane's pixel covers a round footprint of 2^lod in
+    // (u, v) units (tests, single points; -infinity or NaN: a point,
     // read as magnified): lambda = lod + log2 sqrt(width * height) picks
     // the level.
     template <typename T>
