@@ -8,6 +8,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/flags.h"
+#include "cli/huge_page_malloc.h"
 #include "render/levels.h"
 #include "text/input_error.h"
 
@@ -72,6 +73,7 @@ int dispatch(int argc, char** argv) {
 }  // namespace fh
 
 int main(int argc, char** argv) {
+    fh::use_huge_page_malloc();
     try {
         return fh::dispatch(argc, argv);
     } catch (const fh::InputError& e) {
