@@ -153,17 +153,17 @@ std::string vertex_name(Format format, const aiMesh& mesh, unsigned v, std::size
 
 std::array<float, 3> floats(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 
-// Where vertex `v` of a mesh as read is in a text file (vertex_name's vertex),
-// its first non-finite coordinate -- or with `normals`, its first non-finite
-// number (OBJ: in the `vn` record of that normal).
+// Where vertex `v` of a mesh as read is in a text file (vertex_name's vertex):
+// the first non-finite number of its `part` (OBJ: a normal in the `vn`
+// record of that normal, a colour in the `v` record at its position).
 TextPosition nonfinite_position(const std::string& path, Format format, const aiMesh& mesh, unsigned v,
-                                std::size_t first_facet, bool normals) {
+                                std::size_t first_facet, VertexPart part) {
     if (format == Format::obj) {
-        const std::array<float, 3> p = floats(normals ? mesh.mNormals[v] : mesh.mVertices[v]);
-        return nonfinite_vertex_position(path, format, normals, -1, &p);
+        const std::array<float, 3> p = floats(part == VertexPart::normal ? mesh.mNormals[v] : mesh.mVertices[v]);
+        return nonfinite_vertex_position(path, format, part, -1, &p);
     }
     const long long record = format == Format::stl ? 3 * static_cast<long long>(first_facet) + v : v;
-    return nonfinite_vertex_position(path, format, normals, record);
+    return nonfinite_vertex_position(path, format, part, record);
 }
 
 // The file as read, before post-processing: faces with vertices, finite
@@ -192,7 +192,7 @@ bool check_read(const std::string& path, Format format, const aiScene& scene, st
             if (finite(mesh.mVertices[v])) continue;
             std::string what = vertex_name(format, mesh, v, first_facet) + " has a non-finite coordinate";
             if (format != Format::obj) what += ": " + triple(mesh.mVertices[v]);
-            const TextPosition at = nonfinite_position(path, format, mesh, v, first_facet, false);
+            const TextPosition at = nonfinite_position(path, format, mesh, v, first_facet, VertexPart::coordinates);
             throw InputError(path, at.line, at.column, what);
         }
         if (mesh.HasNormals() && format != Format::stl) {
@@ -203,7 +203,7 @@ bool check_read(const std::string& path, Format format, const aiScene& scene, st
                     if (!finite(n)) {
                         std::string what = vertex_name(format, mesh, face.mIndices[k], first_facet);
                         const TextPosition at =
-                            nonfinite_position(path, format, mesh, face.mIndices[k], first_facet, true);
+                            nonfinite_position(path, format, mesh, face.mIndices[k], first_facet, VertexPart::normal);
                         throw InputError(path, at.line, at.column,
                                          what.append(" has a non-finite normal: ").append(triple(n)));
                     }
@@ -225,6 +225,24 @@ bool every_mesh_colored(const aiScene& scene) {
     return true;
 }
 
+// Where colours are drawn: each vertex's colour finite, else one error
+// naming the vertex and, in a text file, the number's line and column.
+void check_colours(const std::string& path, Format format, const aiScene& scene) {
+    std::size_t first_facet = 0;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& mesh = *scene.mMeshes[m];
+        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+            const aiColor4D& c = mesh.mColors[0][v];
+            if (std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b)) continue;
+            const TextPosition at = nonfinite_position(path, format, mesh, v, first_facet, VertexPart::colour);
+            throw InputError(path, at.line, at.column,
+                             vertex_name(format, mesh, v, first_facet) + " has a non-finite colour: " +
+                                 triple(aiVector3D(c.r, c.g, c.b)));
+        }
+        first_facet += mesh.mNumFaces;
+    }
+}
+
 // A vertex as joined across the file's meshes: its position, its normal
 // when normals are kept, its colour when colours are.
 struct VertexKey {
@@ -242,11 +260,8 @@ struct VertexKeyHash {
 
 // A vertex colour as the tracer takes it: each channel clamped into [0, 1]
 // (a PLY's bytes come as n / 255; its floats, and an OBJ's numbers, as they are).
-dvec3 vertex_color(const std::string& path, const aiColor4D& c) {
-    if (!(std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b)))
-        throw InputError(path, "a vertex has a non-finite colour: " + triple(aiVector3D(c.r, c.g, c.b)));
-    return glm::clamp(dvec3(c.r, c.g, c.b), 0.0, 1.0);
-}
+// Finite: check_colours has seen to that.
+dvec3 vertex_color(const aiColor4D& c) { return glm::clamp(dvec3(c.r, c.g, c.b), 0.0, 1.0); }
 
 // The post-processed scene as one mesh: vertices joined across meshes (assimp
 // joins within each), triangles of zero area dropped, unused vertices gone;
@@ -281,7 +296,7 @@ MeshData collect(const std::string& path, const aiScene& scene, bool all_normals
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
             const aiVector3D& p = mesh.mVertices[v];
             const aiVector3D n = keep_normals ? mesh.mNormals[v] : aiVector3D(0, 0, 0);
-            const dvec3 color = keep_colors ? vertex_color(path, mesh.mColors[0][v]) : dvec3(0);
+            const dvec3 color = keep_colors ? vertex_color(mesh.mColors[0][v]) : dvec3(0);
             if (positions.size() >= std::numeric_limits<std::uint32_t>::max())
                 throw InputError(path, "more than 2^32 - 1 vertices");
             const auto next = static_cast<std::uint32_t>(positions.size());
@@ -386,6 +401,7 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
         // assimp 5.2.5's JoinIdenticalVertices joins vertices of different
         // colours.
         const bool colors = colors_drawn && every_mesh_colored(*scene);
+        if (colors) check_colours(path, format, *scene);
         int drop = aiComponent_TEXCOORDS | aiComponent_TANGENTS_AND_BITANGENTS;
         if (!colors) drop |= aiComponent_COLORS;
         if (format == Format::stl) drop |= aiComponent_NORMALS;

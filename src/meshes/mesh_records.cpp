@@ -142,11 +142,11 @@ bool same(float a, float b) { return a == b || (std::isnan(a) && std::isnan(b));
 
 }  // namespace
 
-TextPosition nonfinite_vertex_position(const std::string& path, MeshFormat format, bool normals, long long index,
-                                       const std::array<float, 3>* position) {
+TextPosition nonfinite_vertex_position(const std::string& path, MeshFormat format, VertexPart part,
+                                       long long index, const std::array<float, 3>* position) {
     TextPosition at;
     long long k = -1;
-    const Kind kind = normals && format == MeshFormat::obj ? Kind::normal : Kind::vertex;
+    const Kind kind = part == VertexPart::normal && format == MeshFormat::obj ? Kind::normal : Kind::vertex;
     for_each_record(path, format, kind, [&](const Words& w, int line) {
         ++k;
         if (index >= 0 && k != index) return false;
@@ -155,7 +155,7 @@ TextPosition nonfinite_vertex_position(const std::string& path, MeshFormat forma
             for (int i = 0; i < 3; ++i)
                 if (!same(float_of(w[size_t(i)]), (*position)[size_t(i)])) return false;
         }
-        const std::size_t checked = normals ? w.size() : std::min<std::size_t>(3, w.size());
+        const std::size_t checked = part != VertexPart::coordinates ? w.size() : std::min<std::size_t>(3, w.size());
         for (std::size_t i = 0; i < checked; ++i)
             if (!std::isfinite(float_of(w[i]))) {
                 at = {line, w[i].column};

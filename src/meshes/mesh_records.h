@@ -18,16 +18,20 @@ struct TextPosition {
     int column = 0;  // 1-based, of the offending number
 };
 
+// What of a vertex is searched for a non-finite number: its coordinates
+// (a record's first three numbers), its normal (OBJ: in `vn` records;
+// others: any number of the vertex's record) or its colour (any number of
+// the vertex's record: its coordinates, checked before, are finite).
+enum class VertexPart { coordinates, normal, colour };
+
 // The first number that is NaN or infinite as a float (as assimp reads it:
 // 1e39 is infinite) in the file's vertex records -- OBJ `v`, ASCII STL
-// `vertex`, OFF and ASCII PLY vertex lines -- among a record's first three
-// (its coordinates), or among all of them with `normals` (OBJ: in `vn`
-// records). index >= 0: only in the index-th record (from 0, in file
-// order); index < 0 and `position` given: in the first record whose
-// coordinates are those (NaN matching NaN) and hold one; else in the first
-// record that holds one.
-TextPosition nonfinite_vertex_position(const std::string& path, MeshFormat format, bool normals, long long index = -1,
-                                       const std::array<float, 3>* position = nullptr);
+// `vertex`, OFF and ASCII PLY vertex lines -- in `part` of a record.
+// index >= 0: only in the index-th record (from 0, in file order); index <
+// 0 and `position` given: in the first record whose coordinates are those
+// (NaN matching NaN) and hold one; else in the first record that holds one.
+TextPosition nonfinite_vertex_position(const std::string& path, MeshFormat format, VertexPart part,
+                                       long long index = -1, const std::array<float, 3>* position = nullptr);
 
 // The first vertex index in the file's face records (OBJ `f`, OFF and ASCII
 // PLY face lines) that names no vertex: negative or past the last (OBJ:

@@ -692,8 +692,11 @@ TEST(MeshLoader, VertexColoursNotDrawnWhereAssimpWouldMisreadThem) {
 }
 
 TEST(MeshLoaderErrors, NonFiniteVertexColour) {
+    // The vertex named as its coordinates are, the number by line and column.
     EXPECT_EQ(mesh_error("nan_color.ply", colored_ply("float", "0 0 0  nan 1 0  0 0 1")),
-              "FILE: error: a vertex has a non-finite colour: (nan, 1, 0)");
+              "FILE:14:7: error: vertex 1 has a non-finite colour: (nan, 1, 0)");
+    EXPECT_EQ(mesh_error("inf_color.obj", "v 0 0 0 1 0 0\nv 1 0 0 0 inf 0\nv 0 1 0 0 0 1\nf 1 2 3\n"),
+              "FILE:2:11: error: the vertex at (1, 0, 0) has a non-finite colour: (0, inf, 0)");
 }
 
 TEST(MeshLoaderErrors, NonFiniteNormals) {
