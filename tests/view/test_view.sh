@@ -96,8 +96,10 @@ start_view() {  # FILE [args...]
   ASAN_OPTIONS="${ASAN_OPTIONS:-} detect_leaks=0" \
     "$firsthit" view "$@" >"$tmp/view.out" 2>"$tmp/view.err" &
   view_pid=$!
-  wid=$(timeout 30 xdotool search --sync --name '^firsthit view' | head -n 1) ||
-    fail "no window named 'firsthit view...' within 30 s"
+  # --onlyvisible: a window found before it is mapped cannot take the focus
+  # (X's BadMatch on SetInputFocus, seen once in CI under AddressSanitizer).
+  wid=$(timeout 30 xdotool search --sync --onlyvisible --name '^firsthit view' | head -n 1) ||
+    fail "no window named 'firsthit view...' shown within 30 s"
   xdotool windowfocus --sync "$wid"
 }
 
