@@ -43,7 +43,7 @@ void use_huge_page_malloc() {
         std::free(block);
     }
     const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(sbrk(0));
-    mallopt(M_TOP_PAD, 0);  // later growth: as glibc would
+    mallopt(M_TOP_PAD, 128 << 10);  // later growth: glibc's default pad (mallopt(3))
     const std::uintptr_t from = (start + kHuge - 1) & ~(kHuge - 1);
     if (end > from) madvise(reinterpret_cast<void*>(from), end - from, MADV_HUGEPAGE);  // a hint
 #endif

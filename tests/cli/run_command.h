@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "sanitizer_build.h"
 #include "test_util.h"
 
 extern char** environ;
@@ -113,18 +114,7 @@ inline int thread_count(pid_t pid) {
 }
 
 // Tests that time things run slower under the sanitizers.
-inline constexpr int kSlowdown =
-#if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
-    4;
-#elif defined(__has_feature)
-#if __has_feature(thread_sanitizer) || __has_feature(address_sanitizer)
-    4;
-#else
-    1;
-#endif
-#else
-    1;
-#endif
+inline constexpr int kSlowdown = kMallocSanitized ? 4 : 1;
 
 inline std::string source_path(const std::string& rel) {
     return std::string(FIRSTHIT_SOURCE_DIR) + "/" + rel;

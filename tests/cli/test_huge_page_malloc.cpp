@@ -14,22 +14,10 @@
 #include <string>
 
 #include "cli/huge_page_malloc.h"
+#include "sanitizer_build.h"
 
 namespace fh {
 namespace huge_page_malloc_test {
-
-// Under the sanitizers malloc is theirs, not glibc's.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kOwnMalloc = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-constexpr bool kOwnMalloc = true;
-#else
-constexpr bool kOwnMalloc = false;
-#endif
-#else
-constexpr bool kOwnMalloc = false;
-#endif
 
 bool huge_pages_possible() {
     std::ifstream f("/sys/kernel/mm/transparent_hugepage/enabled");
@@ -69,7 +57,7 @@ int check_in_child() {
 // again, this test alone): in a process that has run other tests the heap
 // may hold free space below the part that asks, where the block would go.
 TEST(HugePageMalloc, ABigBlockLiesInAHeapThatAsksForHugePages) {
-    if (kOwnMalloc) GTEST_SKIP() << "a sanitizer's malloc replaces glibc's";
+    if (kMallocSanitized) GTEST_SKIP() << "a sanitizer's malloc replaces glibc's";
     if (!huge_pages_possible()) GTEST_SKIP() << "transparent huge pages are off on this machine";
     const pid_t child = fork();
     ASSERT_GE(child, 0);

@@ -18,11 +18,10 @@
 #include "render/packet_intersect.h"
 #include "render/thread_pool.h"
 #include "robustness/robust_util.h"
+#include "sanitizer_build.h"
 
 namespace fh {
 namespace {
-
-using robust::kSanitized;
 
 // A soup in the cube [-5, 5]^3: triangles of random size (from slivers to
 // a fifth of the cube) and spheres, with one material.

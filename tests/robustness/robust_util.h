@@ -13,6 +13,7 @@
 
 #include "render/render.h"
 #include "scene/scene.h"
+#include "sanitizer_build.h"
 
 namespace fh::robust {
 
@@ -23,18 +24,8 @@ constexpr Precision precision_of() {
     return std::is_same_v<T, float> ? Precision::float32 : Precision::float64;
 }
 
-// Sanitizer builds run the slowest loops of the battery with fewer rays.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__) || defined(__SANITIZE_THREAD__)
-inline constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer) || __has_feature(thread_sanitizer)
-inline constexpr bool kSanitized = true;
-#else
-inline constexpr bool kSanitized = false;
-#endif
-#else
-inline constexpr bool kSanitized = false;
-#endif
+// Sanitizer builds (kSanitized, sanitizer_build.h) run the slowest loops of
+// the battery with fewer rays.
 
 // A material with one colour for its three terms.
 inline Material<double> material(dvec3 color, double ambient, double diffuse, double specular,
