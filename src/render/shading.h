@@ -75,6 +75,8 @@ public:
         Lanes<T> weight = splat(T(1));
         LaneInts<T> layers{};  // see-through surfaces each ray has gone through (go_on)
         Lanes<T> travelled = zero;  // each ray's path before its origin (its cone's distance)
+        // (Camera rays: their share of the cone, render/texture_footprint.h.)
+        const Lanes<T> cone_share = scene_.minified ? cone_.share(ray.direction) : splat(T(1));
         for (int depth = 0;; ++depth) {
             LaneInts<T> instance;  // each lane's instance, or kNoInstance (kInstances only)
             const HitLanes<T> h = hits(ray, active, depth == 0 ? first_hits : nullptr, instance);
@@ -86,7 +88,7 @@ public:
             }
             SurfaceLanes surface;
             if constexpr (kInstances) {
-                instanced_surfaces(ray, h, instance, hit, travelled, surface, local);
+                instanced_surfaces(ray, h, instance, hit, travelled, cone_share, surface, local);
                 if (scene_.minified) travelled += select(hit, h.t, zero);
             } else {
                 surfaces(ray, h, hit, surface, local);
@@ -283,7 +285,8 @@ private:
     // primitive; an instance's primitive is projected in its mesh's space and
     // carried back to the world (normals by the inverse transpose).
     FH_HOT_INLINE void instanced_surfaces(const RayPacket<T>& ray, const HitLanes<T>& h, const LaneInts<T>& instance,
-                                          const LaneInts<T>& hit, const Lanes<T>& travelled, SurfaceLanes& s,
+                                          const LaneInts<T>& hit, const Lanes<T>& travelled,
+                                          const Lanes<T>& cone_share, SurfaceLanes& s,
                                           ColorLanes<T>& local) const {
         const Lanes<T> zero = splat(T(0));
         const Vec3Lanes<T> p = ray.at(select(hit, h.t, zero));
@@ -315,7 +318,8 @@ private:
             TrianglePoint<T> at{};
             if (scene_.textured && (!mesh.uvs.empty() || !mesh.colors.empty())) at = mesh.point_on(prim, point);
             if (scene_.minified && !mesh.uvs.empty())
-                at.footprint = footprint_on(mesh, prim, inst, ray.direction, cone_.at(travelled + h.t), lanes);
+                at.footprint = footprint_on(mesh, prim, inst, ray.direction,
+                                            cone_.at(travelled + h.t) * cone_share, lanes);
             const MaterialShading<T>& m = scene_.shading[size_t(inst.material)];
             const bool bumpy = scene_.textured && m.normal_texture >= 0 && !mesh.uvs.empty();
             if (bumpy)

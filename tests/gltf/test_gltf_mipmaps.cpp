@@ -333,6 +333,44 @@ TEST(GltfMipmaps, APerspectiveCameraReadsTheSameMean) {
                        0, 7, kGrey, precision_name(p));
 }
 
+template <typename T>
+void expect_every_cone_as_wide(T tolerance) {
+    // A perspective camera at the origin looking down -z, the image plane
+    // at 2, 8 x 8 pixels 0.25 wide (half height 1): spread 0.125. A plane
+    // z = -10 facing it shows every pixel as a square 1.25 wide (0.25 x
+    // 10 / 2), and every ray's cone there is 1.25 wide: t = 10 |v| / 2 along
+    // the ray through the image-plane point v = (x, y, -2), times the
+    // share cos(theta) = 2 / |v|. (Without the share, the corner pixel's
+    // would be 1.25 |(0.875, 0.875, -2)| / 2 = 1.4553.)
+    Camera camera;
+    camera.projection = Projection::perspective;
+    camera.view_point = {0, 0, 0};
+    camera.look_at = {0, 0, -1};
+    camera.up = {0, 1, 0};
+    camera.width = camera.height = 8;
+    camera.half_height = 1;
+    camera.projection_distance = 2;
+    const PixelCone<T> cone = PixelCone<T>::of(camera, 1);
+    const CameraRays<T> rays(camera);
+    for (int j = 0; j < 8; ++j)
+        for (int i = 0; i < 8; ++i) {
+            const Ray<T> r = rays.generate(T(i + 0.5), T(j + 0.5));
+            const T t = T(10) / -r.direction.z;
+            const Vec3Lanes<T> d = Vec3Lanes<T>::splat(r.direction);
+            EXPECT_NEAR((cone.at(splat(t)) * cone.share(d))[0], T(1.25), tolerance) << i << ", " << j;
+        }
+    // An orthographic camera's rays are all alike: the share is 1.
+    camera.projection = Projection::orthographic;
+    const PixelCone<T> parallel = PixelCone<T>::of(camera, 1);
+    EXPECT_EQ(parallel.width, T(0.25));
+    EXPECT_EQ(parallel.share(Vec3Lanes<T>::splat(Vec3<T>(T(0.6), T(0), T(-0.8))))[0], T(1));
+}
+
+TEST(GltfMipmaps, EveryPixelsConeIsAsWideOnAPlaneFacingTheCamera) {
+    expect_every_cone_as_wide<double>(1e-12);
+    expect_every_cone_as_wide<float>(1e-5f);
+}
+
 TEST(GltfMipmaps, TheConeGoesOnPastAClearPane) {
     // A pane of alpha 0 (BLEND) at z = 5, between the eye (z = 10) and the
     // striped floor: the rays go on past it, their cones counting the whole
