@@ -1,8 +1,18 @@
 // Where a pixel's samples go. One sample: the pixel's centre. n samples: the
 // pixel is cut into an nx x ny grid of strata (nx * ny = n, as square as n
-// allows) and each stratum gets one sample, jittered inside it by a hash of
-// (pixel, sample). The hash makes every sample a pure function of its pixel,
-// so an image is the same for any thread count, tile order or shard.
+// allows) and each stratum gets one sample, multi-jittered (Chiu, Shirley
+// and Wang, "Multi-Jittered Sampling", Graphics Gems IV, 1994; shuffled
+// per pixel as Kensler's correlated multi-jittering is): within its
+// stratum each sample takes one of ny sub-columns and one of nx sub-rows,
+// so that the n samples' x lie in n different n-ths of the pixel, and so
+// do their y -- an edge across the pixel in any direction is met by as many
+// samples as its share of the pixel, to within one, where plain jitter in
+// the strata only promises that per row or column of strata. Which
+// sub-column goes to which row of strata, and which sub-row to which
+// column, are permutations of the pixel's; where the sample lies in its
+// sub-cell is a hash of (pixel, sample). Every sample is a pure function of
+// its pixel, so an image is the same for any thread count, tile order or
+// shard.
 #pragma once
 
 #include <cstdint>
@@ -33,17 +43,66 @@ inline std::uint64_t mix64(std::uint64_t z) {
 // A number in [0, 1) from the top 24 bits: exact in float and double alike.
 inline double unit_from_bits(std::uint64_t bits) { return double(bits >> 40) * 0x1p-24; }
 
+// A permutation of [0, count), chosen by a key: a bijection of the numbers
+// of as many bits as count needs (xor, multiply by an odd number, xorshift,
+// multiply-add -- each step invertible), applied again until the value
+// falls in [0, count), which the cycle through any i there reaches.
+class Permutation {
+public:
+    Permutation(int count, std::uint64_t key)
+        : count_(unsigned(count)), a_(unsigned(key)), m1_(unsigned(key >> 16) | 1u),
+          m2_(unsigned(key >> 32) | 1u), b_(unsigned(key >> 48)) {
+        while ((1u << bits_) < count_) ++bits_;
+        mask_ = (1u << bits_) - 1;
+    }
+
+    int operator()(int i) const {
+        unsigned v = unsigned(i);
+        do {
+            v = ((v ^ a_) * m1_) & mask_;
+            v ^= v >> ((bits_ + 1) / 2);
+            v = (v * m2_ + b_) & mask_;
+        } while (v >= count_);
+        return int(v);
+    }
+
+private:
+    unsigned count_, a_, m1_, m2_, b_;
+    unsigned bits_ = 0, mask_ = 0;
+};
+
 struct SampleOffset {
     double x, y;  // in [0, 1) within the pixel
 };
 
+// One pixel's samples, what depends on the pixel alone worked out once.
+class PixelSamples {
+public:
+    PixelSamples(int px, int py, StrataGrid grid)
+        : grid_(grid), key_(mix64((std::uint64_t(std::uint32_t(py)) << 32) | std::uint32_t(px))),
+          column_of_row_(grid.ny, mix64(key_ ^ 0x9e3779b97f4a7c15ull)),
+          row_of_column_(grid.nx, mix64(key_ ^ 0xbf58476d1ce4e5b9ull)),
+          unit_(1.0 / double(grid.nx * grid.ny)) {}
+
+    SampleOffset operator[](int sample) const {
+        if (grid_.nx * grid_.ny == 1) return {0.5, 0.5};
+        const std::uint64_t h = mix64(key_ ^ std::uint64_t(sample) * 0xd1b54a32d192ed03ull);
+        const int sx = sample % grid_.nx;
+        const int sy = sample / grid_.nx;
+        // x = (sx + (sub-column + jitter) / ny) / nx, as one product.
+        return {(sx * grid_.ny + column_of_row_(sy) + unit_from_bits(h)) * unit_,
+                (sy * grid_.nx + row_of_column_(sx) + unit_from_bits(mix64(h))) * unit_};
+    }
+
+private:
+    StrataGrid grid_;
+    std::uint64_t key_;
+    Permutation column_of_row_, row_of_column_;
+    double unit_;
+};
+
 inline SampleOffset sample_offset(int px, int py, int sample, StrataGrid grid) {
-    if (grid.nx * grid.ny == 1) return {0.5, 0.5};
-    const std::uint64_t key = mix64((std::uint64_t(std::uint32_t(py)) << 32) | std::uint32_t(px));
-    const std::uint64_t h = mix64(key ^ std::uint64_t(sample) * 0xd1b54a32d192ed03ull);
-    const int sx = sample % grid.nx;
-    const int sy = sample / grid.nx;
-    return {(sx + unit_from_bits(h)) / grid.nx, (sy + unit_from_bits(mix64(h))) / grid.ny};
+    return PixelSamples(px, py, grid)[sample];
 }
 
 }  // namespace fh

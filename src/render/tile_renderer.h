@@ -135,10 +135,12 @@ template <typename T, typename S>
 void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef* pixels, int count,
                    int spp, const PrimitiveSubset* visible, Image& image, RayCounts& counts) {
     constexpr int W = kLanes<T>;
+    if (count == 0) return;
     const StrataGrid grid = strata_for(spp);
     alignas(64) double sum[3][kTileSize * kTileSize];
     for (auto& channel : sum) std::fill_n(channel, count, 0.0);
     int pixel = 0, sample = 0;  // the next sample to take
+    PixelSamples offsets(pixels[0].x, pixels[0].y, grid);  // the pixel's
     const int samples = count * spp;
     for (int first = 0; first < samples; first += W) {
         const int n = std::min(W, samples - first);
@@ -147,11 +149,14 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
         for (int i = 0; i < W; ++i) {
             if (i < n) {
                 const PixelRef px = pixels[pixel];
-                const SampleOffset o = sample_offset(px.x, px.y, sample, grid);
+                const SampleOffset o = offsets[sample];
                 sx[i] = T(px.x + o.x);
                 sy[i] = T(px.y + o.y);
                 pixel_of[i] = pixel;
-                if (++sample == spp) sample = 0, ++pixel;
+                if (++sample == spp) {
+                    sample = 0;
+                    if (++pixel < count) offsets = PixelSamples(pixels[pixel].x, pixels[pixel].y, grid);
+                }
             } else {  // past the last sample: a copy of it, in an inactive lane
                 sx[i] = sx[i - 1];
                 sy[i] = sy[i - 1];

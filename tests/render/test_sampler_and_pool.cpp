@@ -4,6 +4,7 @@
 #include <atomic>
 #include <set>
 #include <stdexcept>
+#include <vector>
 
 #include "render/sampler.h"
 #include "render/thread_pool.h"
@@ -39,6 +40,48 @@ TEST(Sampler, EachStratumGetsExactlyOneSample) {
         }
         EXPECT_EQ(int(cells.size()), n) << n << " samples";
     }
+}
+
+TEST(Sampler, EveryNthOfThePixelGetsOneSampleEachWay) {
+    // Multi-jittered: the n samples' x fall in n different n-ths of the
+    // pixel, and so do their y -- for 4 samples, plain jitter in 2 x 2
+    // strata would put two samples' y in one half of each row of strata,
+    // and an edge across the pixel could miss both quarters of a half.
+    for (int n : {2, 4, 7, 8, 16, 64, 256}) {
+        const StrataGrid g = strata_for(n);
+        for (int p = 0; p < 50; ++p) {
+            std::set<int> xs, ys;
+            for (int s = 0; s < n; ++s) {
+                const auto o = sample_offset(17 * p, 1000 - p, s, g);
+                xs.insert(int(o.x * n));
+                ys.insert(int(o.y * n));
+            }
+            EXPECT_EQ(int(xs.size()), n) << n << " samples, pixel " << p;
+            EXPECT_EQ(int(ys.size()), n) << n << " samples, pixel " << p;
+        }
+    }
+}
+
+TEST(Sampler, PermutationsAreBijectionsForAnyCountAndKey) {
+    for (int count = 1; count <= 40; ++count)
+        for (std::uint64_t k = 0; k < 200; ++k) {
+            const Permutation perm(count, mix64(k));
+            std::set<int> seen;
+            for (int i = 0; i < count; ++i) {
+                const int v = perm(i);
+                ASSERT_GE(v, 0);
+                ASSERT_LT(v, count);
+                seen.insert(v);
+            }
+            EXPECT_EQ(int(seen.size()), count) << "count " << count << ", key " << k;
+        }
+    // Keys give other orders: of the 24 orders of 4, the pixels' keys reach many.
+    std::set<std::vector<int>> orders;
+    for (std::uint64_t k = 0; k < 200; ++k) {
+        const Permutation perm(4, mix64(k));
+        orders.insert({perm(0), perm(1), perm(2), perm(3)});
+    }
+    EXPECT_GE(orders.size(), 12u);
 }
 
 TEST(Sampler, SamplesDependOnlyOnPixelAndIndex) {
