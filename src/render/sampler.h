@@ -5,9 +5,9 @@
 // per pixel as Kensler's correlated multi-jittering is): within its
 // stratum each sample takes one of ny sub-columns and one of nx sub-rows,
 // so that the n samples' x lie in n different n-ths of the pixel, and so
-// do their y -- an edge across the pixel in any direction is met by as many
+// do their y -- an edge along either side of the pixel is met by as many
 // samples as its share of the pixel, to within one, where plain jitter in
-// the strata only promises that per row or column of strata. Which
+// the strata only promises that to within a row or column of strata. Which
 // sub-column goes to which row of strata, and which sub-row to which
 // column, are permutations of the pixel's; where the sample lies in its
 // sub-cell is a hash of (pixel, sample). Every sample is a pure function of

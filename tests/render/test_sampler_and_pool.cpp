@@ -45,8 +45,8 @@ TEST(Sampler, EachStratumGetsExactlyOneSample) {
 TEST(Sampler, EveryNthOfThePixelGetsOneSampleEachWay) {
     // Multi-jittered: the n samples' x fall in n different n-ths of the
     // pixel, and so do their y -- for 4 samples, plain jitter in 2 x 2
-    // strata would put two samples' y in one half of each row of strata,
-    // and an edge across the pixel could miss both quarters of a half.
+    // strata lets both samples of a row of strata fall in one quarter of
+    // the pixel's height.
     for (int n : {2, 4, 7, 8, 16, 64, 256}) {
         const StrataGrid g = strata_for(n);
         for (int p = 0; p < 50; ++p) {
