@@ -75,8 +75,11 @@ public:
         Lanes<T> weight = splat(T(1));
         LaneInts<T> layers{};  // see-through surfaces each ray has gone through (go_on)
         Lanes<T> travelled = zero;  // each ray's path before its origin (its cone's distance)
-        // (Camera rays: their share of the cone, render/texture_footprint.h.)
-        const Lanes<T> cone_share = scene_.minified ? cone_.share(ray.direction) : splat(T(1));
+        // Camera rays: their share of the cone (render/texture_footprint.h;
+        // textures lie on instances' meshes only).
+        Lanes<T> cone_share = splat(T(1));
+        if constexpr (kInstances)
+            if (scene_.minified) cone_share = cone_.share(ray.direction);
         for (int depth = 0;; ++depth) {
             LaneInts<T> instance;  // each lane's instance, or kNoInstance (kInstances only)
             const HitLanes<T> h = hits(ray, active, depth == 0 ? first_hits : nullptr, instance);
