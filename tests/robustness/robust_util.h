@@ -13,7 +13,7 @@
 
 #include "render/render.h"
 #include "scene/scene.h"
-#include "sanitizer_build.h"
+#include "sanitizer_build.h"  // kSanitized: the slowest loops of the battery take fewer rays
 
 namespace fh::robust {
 
@@ -23,9 +23,6 @@ template <typename T>
 constexpr Precision precision_of() {
     return std::is_same_v<T, float> ? Precision::float32 : Precision::float64;
 }
-
-// Sanitizer builds (kSanitized, sanitizer_build.h) run the slowest loops of
-// the battery with fewer rays.
 
 // A material with one colour for its three terms.
 inline Material<double> material(dvec3 color, double ambient, double diffuse, double specular,
