@@ -32,8 +32,10 @@ inline StrataGrid strata_for(int n) {
     return {n / ny, ny};
 }
 
-// A 64-bit finaliser (splitmix64): a cheap, well-mixed hash.
-inline std::uint64_t mix64(std::uint64_t z) {
+// A 64-bit finaliser (splitmix64): a cheap, well-mixed hash -- of one
+// number, or lane by lane of a vector of them.
+template <typename U = std::uint64_t>
+inline U mix64(U z) {
     z += 0x9e3779b97f4a7c15ull;
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
@@ -75,30 +77,66 @@ struct SampleOffset {
     double x, y;  // in [0, 1) within the pixel
 };
 
+// A sample before its jitter: the sub-cell (x, y) it lies in, of the pixel
+// cut n x n for n samples, and what its jitter is hashed from.
+struct SampleCell {
+    int x, y;
+    std::uint64_t seed;
+};
+
+// Where in its sub-cell a sample lies, from its cell's seed: x from the
+// seed's hash h, y from h's hash.
+inline SampleOffset jittered(const SampleCell& c, double unit) {
+    const std::uint64_t h = mix64(c.seed);
+    return {(c.x + unit_from_bits(h)) * unit, (c.y + unit_from_bits(mix64(h))) * unit};
+}
+
 // One pixel's samples, what depends on the pixel alone worked out once.
 class PixelSamples {
 public:
     PixelSamples(int px, int py, StrataGrid grid)
         : grid_(grid), key_(mix64((std::uint64_t(std::uint32_t(py)) << 32) | std::uint32_t(px))),
           column_of_row_(grid.ny, mix64(key_ ^ 0x9e3779b97f4a7c15ull)),
-          row_of_column_(grid.nx, mix64(key_ ^ 0xbf58476d1ce4e5b9ull)),
-          unit_(1.0 / double(grid.nx * grid.ny)) {}
+          row_of_column_(grid.nx, mix64(key_ ^ 0xbf58476d1ce4e5b9ull)), column_(column_of_row_(0)) {}
 
+    // The width of a sub-cell, a pixel's 1 / n.
+    double unit() const { return 1.0 / double(grid_.nx * grid_.ny); }
+
+    // Any one sample.
     SampleOffset operator[](int sample) const {
         if (grid_.nx * grid_.ny == 1) return {0.5, 0.5};
-        const std::uint64_t h = mix64(key_ ^ std::uint64_t(sample) * 0xd1b54a32d192ed03ull);
-        const int sx = sample % grid_.nx;
-        const int sy = sample / grid_.nx;
-        // x = (sx + (sub-column + jitter) / ny) / nx, as one product.
-        return {(sx * grid_.ny + column_of_row_(sy) + unit_from_bits(h)) * unit_,
-                (sy * grid_.nx + row_of_column_(sx) + unit_from_bits(mix64(h))) * unit_};
+        return jittered(cell(sample, sample % grid_.nx, sample / grid_.nx, column_of_row_(sample / grid_.nx)),
+                        unit());
+    }
+
+    // The samples' cells in order, 0, 1, 2, ... as operator[] takes them
+    // (for n > 1), for the renderer's loop, which jitters a packet's lanes
+    // at once: the stratum counted along instead of divided out, and a row
+    // of strata's sub-column worked out once a row.
+    SampleCell next_cell() {
+        const SampleCell c = cell(sample_++, sx_, sy_, column_);
+        if (++sx_ == grid_.nx) {
+            sx_ = 0;
+            // (Not past the last row: a permutation's walk from outside its
+            // range need not come back into it.)
+            if (++sy_ < grid_.ny) column_ = column_of_row_(sy_);
+        }
+        return c;
     }
 
 private:
+    // Sample `sample` in stratum (sx, sy), whose row of strata has
+    // sub-column `column`: x = (sx + (sub-column + jitter) / ny) / nx, and
+    // y alike, as one product each.
+    SampleCell cell(int sample, int sx, int sy, int column) const {
+        return {sx * grid_.ny + column, sy * grid_.nx + row_of_column_(sx),
+                key_ ^ std::uint64_t(sample) * 0xd1b54a32d192ed03ull};
+    }
+
     StrataGrid grid_;
     std::uint64_t key_;
     Permutation column_of_row_, row_of_column_;
-    double unit_;
+    int sample_ = 0, sx_ = 0, sy_ = 0, column_;  // next_cell()'s place
 };
 
 inline SampleOffset sample_offset(int px, int py, int sample, StrataGrid grid) {

@@ -25,12 +25,14 @@ namespace detail {
 
 inline std::uint8_t to_byte(double v) { return std::uint8_t(std::floor(v + 0.5)); }
 
-// A packet's lanes widened to double, as 32-bit integers and as bytes.
+// A packet's lanes widened to double, as 32-bit integers, as bytes and as
+// 64-bit seeds.
 template <typename T>
 struct WideLanes {
     typedef double Doubles __attribute__((vector_size(kLanes<T> * sizeof(double))));
     typedef std::int32_t Ints __attribute__((vector_size(kLanes<T> * sizeof(std::int32_t))));
     typedef std::uint8_t Bytes __attribute__((vector_size(kLanes<T>)));
+    typedef std::uint64_t Seeds __attribute__((vector_size(kLanes<T> * sizeof(std::uint64_t))));
 };
 
 // to_byte of each lane of a clamped channel, as vector conversions: in
@@ -137,45 +139,79 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
     constexpr int W = kLanes<T>;
     if (count == 0) return;
     const StrataGrid grid = strata_for(spp);
-    alignas(64) double sum[3][kTileSize * kTileSize];
-    for (auto& channel : sum) std::fill_n(channel, count, 0.0);
+    const int samples = count * spp;
     int pixel = 0, sample = 0;  // the next sample to take
     PixelSamples offsets(pixels[0].x, pixels[0].y, grid);  // the pixel's
-    const int samples = count * spp;
-    for (int first = 0; first < samples; first += W) {
-        const int n = std::min(W, samples - first);
-        alignas(64) T sx[W], sy[W];
-        int pixel_of[W];
+    // The camera rays of the next n samples (past the last sample, the lanes
+    // repeat it, inactive): each lane's cell in turn, then every lane's
+    // jitter at once (PixelSamples' `jittered`, lane by lane).
+    using Doubles = typename WideLanes<T>::Doubles;
+    using Seeds = typename WideLanes<T>::Seeds;
+    const double unit = offsets.unit();
+    auto take = [&](int n) FH_HOT_LAMBDA {
+        alignas(64) double x[W], y[W], cx[W], cy[W];
+        alignas(64) std::uint64_t seed[W];
         for (int i = 0; i < W; ++i) {
             if (i < n) {
-                const PixelRef px = pixels[pixel];
-                const SampleOffset o = offsets[sample];
-                sx[i] = T(px.x + o.x);
-                sy[i] = T(px.y + o.y);
-                pixel_of[i] = pixel;
+                const SampleCell c = offsets.next_cell();
+                x[i] = pixels[pixel].x, y[i] = pixels[pixel].y, cx[i] = c.x, cy[i] = c.y, seed[i] = c.seed;
                 if (++sample == spp) {
                     sample = 0;
                     if (++pixel < count) offsets = PixelSamples(pixels[pixel].x, pixels[pixel].y, grid);
                 }
-            } else {  // past the last sample: a copy of it, in an inactive lane
-                sx[i] = sx[i - 1];
-                sy[i] = sy[i - 1];
+            } else {
+                x[i] = x[i - 1], y[i] = y[i - 1], cx[i] = cx[i - 1], cy[i] = cy[i - 1], seed[i] = seed[i - 1];
             }
         }
+        Doubles px, py;
+        std::memcpy(&px, x, sizeof px);
+        std::memcpy(&py, y, sizeof py);
+        if (spp == 1) {  // the pixel's centre
+            px += 0.5, py += 0.5;
+        } else {
+            Doubles lx, ly;
+            Seeds h;
+            std::memcpy(&lx, cx, sizeof lx);
+            std::memcpy(&ly, cy, sizeof ly);
+            std::memcpy(&h, seed, sizeof h);
+            // unit_from_bits: the top 24 bits, through 32-bit integers,
+            // which every x86-64 level converts in one instruction.
+            auto unit_lanes = [](const Seeds& bits) FH_HOT_LAMBDA {
+                return __builtin_convertvector(__builtin_convertvector(bits >> 40, typename WideLanes<T>::Ints),
+                                               Doubles) * 0x1p-24;
+            };
+            h = mix64(h);
+            px += (lx + unit_lanes(h)) * unit;
+            py += (ly + unit_lanes(mix64(h))) * unit;
+        }
+        return camera.generate(__builtin_convertvector(px, Lanes<T>), __builtin_convertvector(py, Lanes<T>));
+    };
+    // Each pixel's sum, sample by sample in their order, then its byte.
+    double sum[3] = {0, 0, 0};
+    int summed = 0, done = 0;  // samples in sum; pixels written
+    RayPacket<T> rays = take(std::min(W, samples));
+    for (int first = 0; first < samples; first += W) {
+        const int n = std::min(W, samples - first);
+        // The next packet's rays before this one is traced: their square
+        // root and division run beside the trace (as in render_centres).
+        const RayPacket<T> next = first + W < samples ? take(std::min(W, samples - first - W)) : rays;
         const LaneInts<T> active = first_lanes<T>(n);
         counts.primary += std::uint64_t(n);
-        const ColorLanes<T> c = clamp_samples(
-            shader.trace(camera.generate(load(sx), load(sy)), active, counts, visible), active, counts);
+        const ColorLanes<T> c = clamp_samples(shader.trace(rays, active, counts, visible), active, counts);
         alignas(64) T rgb[3][W];
         store(rgb[0], c.x);
         store(rgb[1], c.y);
         store(rgb[2], c.z);
-        for (int i = 0; i < n; ++i)
-            for (int k = 0; k < 3; ++k) sum[k][pixel_of[i]] += double(rgb[k][i]);
-    }
-    for (int p = 0; p < count; ++p) {
-        std::uint8_t* px = image.pixel(pixels[p].x, pixels[p].y);
-        for (int k = 0; k < 3; ++k) px[k] = to_byte(sum[k][p] / double(spp));
+        for (int i = 0; i < n; ++i) {
+            for (int k = 0; k < 3; ++k) sum[k] += double(rgb[k][i]);
+            if (++summed == spp) {
+                std::uint8_t* px = image.pixel(pixels[done].x, pixels[done].y);
+                for (int k = 0; k < 3; ++k) px[k] = to_byte(sum[k] / double(spp)), sum[k] = 0;
+                summed = 0;
+                ++done;
+            }
+        }
+        rays = next;
     }
 }
 

@@ -62,6 +62,25 @@ TEST(Sampler, EveryNthOfThePixelGetsOneSampleEachWay) {
     }
 }
 
+TEST(Sampler, CellsInOrderGiveTheSamplesOneByOne) {
+    // The renderer walks a pixel's cells in order and jitters them a packet
+    // at a time: the same numbers, to the bit, as any sample asked alone --
+    // for square, oblong and prime counts, over each of their rows.
+    for (int n : {2, 3, 4, 6, 7, 8, 12, 16, 64, 97, 256}) {
+        const StrataGrid g = strata_for(n);
+        for (int p = 0; p < 20; ++p) {
+            PixelSamples in_order(31 * p, 7 + p, g);
+            const PixelSamples any(31 * p, 7 + p, g);
+            for (int s = 0; s < n; ++s) {
+                const SampleOffset a = jittered(in_order.next_cell(), in_order.unit());
+                const SampleOffset b = any[s];
+                ASSERT_EQ(a.x, b.x) << n << " samples, sample " << s;
+                ASSERT_EQ(a.y, b.y) << n << " samples, sample " << s;
+            }
+        }
+    }
+}
+
 TEST(Sampler, PermutationsAreBijectionsForAnyCountAndKey) {
     for (int count = 1; count <= 40; ++count)
         for (std::uint64_t k = 0; k < 200; ++k) {
