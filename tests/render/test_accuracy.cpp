@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <random>
 
 #include "yaml/scene_loader.h"
 #include "render/adaptive.h"
@@ -133,6 +135,41 @@ TEST(Accuracy, RefinesTheNeighbourhoodOfAnEdge) {
     EXPECT_EQ(refine.back().x, 3);
     EXPECT_EQ(refine.back().y, 3);
     EXPECT_TRUE(pixels_to_refine(img, 255).empty());
+}
+
+TEST(Accuracy, RefinesWhatEightNeighboursCheckedOneByOneWouldRefine) {
+    // The pass compares each pair of neighbours once, a row of bytes at a
+    // time: on random images it must pick the very pixels (and order) that
+    // asking each pixel's 8 neighbours, channel by channel, picks --
+    // thresholds fractional, at the steps, and outside 0..255 included.
+    auto by_hand = [](const Image& img, double threshold) {
+        std::vector<std::pair<int, int>> out;
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x) {
+                bool edge = false;
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int nx = x + dx, ny = y + dy;
+                        if (nx < 0 || ny < 0 || nx >= img.width || ny >= img.height) continue;
+                        for (int c = 0; c < 3; ++c)
+                            edge |= std::abs(int(img.pixel(x, y)[c]) - int(img.pixel(nx, ny)[c])) > threshold;
+                    }
+                if (edge) out.push_back({x, y});
+            }
+        return out;
+    };
+    std::mt19937 rng(7);
+    for (const auto [w, h] : {std::pair{1, 1}, {1, 6}, {6, 1}, {2, 2}, {7, 3}, {33, 17}})
+        for (const int spread : {4, 20, 256}) {  // how far the bytes wander from pixel to pixel
+            Image img(w, h);
+            for (auto& b : img.rgb) b = std::uint8_t(std::min(255, 100 + int(rng() % unsigned(spread))));
+            for (const double threshold : {-1.0, 0.0, 0.5, 3.0, 8.0, 8.5, 19.0, 254.5, 255.0, 300.0}) {
+                std::vector<std::pair<int, int>> got;
+                for (const PixelRef& p : pixels_to_refine(img, threshold)) got.push_back({p.x, p.y});
+                EXPECT_EQ(got, by_hand(img, threshold)) << w << " x " << h << ", spread " << spread
+                                                        << ", threshold " << threshold;
+            }
+        }
 }
 
 }  // namespace
