@@ -29,14 +29,14 @@ std::string number(double v) {
 
 void write_csv(std::ostream& out, const std::vector<AccuracyRow>& rows) {
     out << "setting,spp,adaptive,depth,precision,ms,rays,rmse,psnr,max_error,refined_pixels,"
-           "isolated_rmse,isolated_psnr\n";
+           "isolated_rmse,isolated_psnr,mipmaps\n";
     for (const AccuracyRow& r : rows) {
         const RenderSettings& s = r.settings;
         out << r.knob << "," << (s.adaptive ? s.adaptive_samples : s.samples_per_pixel) << ","
             << (s.adaptive ? 1 : 0) << "," << s.max_depth << "," << precision_name(s.precision)
             << "," << number(r.ms) << "," << r.rays << "," << number(r.error.rmse) << ","
             << number(r.error.psnr) << "," << r.error.max_error << "," << r.refined_pixels << ","
-            << number(r.isolated.rmse) << "," << number(r.isolated.psnr) << "\n";
+            << number(r.isolated.rmse) << "," << number(r.isolated.psnr) << "," << (s.mipmaps ? 1 : 0) << "\n";
     }
 }
 
@@ -58,7 +58,9 @@ set ylabel 'PSNR (dB, higher is better)'
 plot '%s' using (strcol(1) eq 'spp' ? $6 : 1/0):(psnr(9)) with linespoints lw 2 pt 7 title 'samples per pixel (uniform)', \
      '' using (strcol(1) eq 'spp' ? $6 : 1/0):(psnr(9)):2 with labels offset 0,1 notitle, \
      '' using (strcol(1) eq 'adaptive' ? $6 : 1/0):(psnr(9)) with linespoints lw 2 pt 5 title 'adaptive (max samples)', \
-     '' using (strcol(1) eq 'adaptive' ? $6 : 1/0):(psnr(9)):2 with labels offset 0,-1 notitle
+     '' using (strcol(1) eq 'adaptive' ? $6 : 1/0):(psnr(9)):2 with labels offset 0,-1 notitle, \
+     '' using (strcol(1) eq 'mipmaps' ? $6 : 1/0):(psnr(9)) with points pt 11 ps 2 title 'textures, 1 sample: mipmaps (1) or none (0)', \
+     '' using (strcol(1) eq 'mipmaps' ? $6 : 1/0):(psnr(9)):14 with labels offset 2,0 notitle
 set title 'depth and precision: error against a 1-sample reference (PSNR 100 = identical)'
 set yrange [*:105]
 plot '%s' using (strcol(1) eq 'depth' ? $6 : 1/0):(psnr(13)) with linespoints lw 2 pt 9 title 'glazing depth 0..8', \

@@ -22,7 +22,7 @@ const std::vector<CommandSpec>& all_commands() {
          "Renders one frame of a scene or movie file (a movie names its scene) to an image, and prints "
          "the path it wrote.",
          {"--frame", "--camera", "--animation", "--fps", "--exposure", "--resolution", "--scale", "--spp", "--depth",
-          "--precision", "--adaptive", "--aa-threshold", "--aa-samples", "--no-prune", "--threads", "--output",
+          "--precision", "--adaptive", "--aa-threshold", "--aa-samples", "--no-mipmaps", "--no-prune", "--threads", "--output",
           "--stats", "--quiet"},
          "The image is written under a temporary name and renamed: it is whole or absent.",
          size_pointers({{"--range", "render draws one frame; for several use 'firsthit frames MOVIE --range A-B'"},
@@ -36,7 +36,7 @@ const std::vector<CommandSpec>& all_commands() {
          "shows frames done, frames per second and the time left.",
          {"--out", "--frame", "--range", "--shard", "--shards", "--resume", "--clean", "--camera", "--animation",
           "--fps", "--exposure", "--resolution", "--scale",
-          "--spp", "--depth", "--precision", "--adaptive", "--aa-threshold", "--aa-samples", "--no-prune",
+          "--spp", "--depth", "--precision", "--adaptive", "--aa-threshold", "--aa-samples", "--no-mipmaps", "--no-prune",
           "--threads", "--raw-video", "--raw-pix-fmt", "--stats", "--quiet"},
          "Frames of another movie or size under the same names (an earlier, longer or larger render into "
          "the same folder) are refused rather than mixed in: pass --clean to remove them, or another "
@@ -56,19 +56,20 @@ const std::vector<CommandSpec>& all_commands() {
          "bvh_nodes its size).",
          {"--frame", "--camera", "--animation", "--fps", "--exposure", "--resolution", "--scale", "--runs",
           "--threads", "--spp", "--depth", "--precision", "--adaptive", "--aa-threshold", "--aa-samples",
-          "--no-prune"},
+          "--no-mipmaps", "--no-prune"},
          "",
          size_pointers()},
         {"accuracy", "FILE", "what each accuracy knob costs: error against a reference vs time",
          "Measures what each accuracy knob costs: renders a reference (double precision, --reference-spp "
          "samples per pixel, glazing depth 16, deeper if 16 has not converged), then sweeps samples per "
-         "pixel 1..--max-spp (uniform and adaptive), depth 0..8 and float against double, and prints a "
-         "table (CSV) with a row per setting.",
+         "pixel 1..--max-spp (uniform and adaptive), depth 0..8, float against double and, where a "
+         "texture may be seen from afar, its mipmaps against none (--no-mipmaps), and prints a table "
+         "(CSV) with a row per setting.",
          {"--frame", "--camera", "--resolution", "--scale", "--csv", "--plot", "--runs", "--threads",
           "--reference-spp", "--max-spp", "--aa-threshold"},
          "The table's columns:\n"
          "  setting         what the row measures: reference (the first row), spp (uniform samples\n"
-         "                  per pixel), adaptive, depth or precision\n"
+         "                  per pixel), adaptive, depth, precision or mipmaps\n"
          "  spp             samples per pixel; in adaptive rows the samples of a refined pixel\n"
          "  adaptive        1 if adaptive anti-aliasing is on (1 sample a pixel, then spp samples\n"
          "                  for the refined ones)\n"
@@ -84,11 +85,15 @@ const std::vector<CommandSpec>& all_commands() {
          "  isolated_rmse   depth and precision rows: rmse against a one-sample reference (double,\n"
          "                  the reference's depth), so the knob's own error is not hidden under\n"
          "                  one sample's aliasing; other rows: the same as rmse\n"
-         "  isolated_psnr   the same as a psnr\n\n"
+         "  isolated_psnr   the same as a psnr\n"
+         "  mipmaps         1 if textures seen from afar are read from their mipmaps over each\n"
+         "                  ray's footprint (the default), 0 if read as magnified (--no-mipmaps);\n"
+         "                  the two mipmaps rows take one sample a pixel\n\n"
          "Which setting for which purpose: previews --spp 1, with --scale 0.25 for speed; final frames "
          "--adaptive (the quality of uniform --aa-samples for a fraction of their time, as psnr against "
          "ms shows); --depth the smallest whose isolated_psnr is inf or above about 50 dB; --precision "
-         "float where its isolated_psnr is that high and its ms lower.",
+         "float where its isolated_psnr is that high and its ms lower; --no-mipmaps only where its psnr "
+         "stays as high.",
          size_pointers()},
         {"info", "FILE", "what a scene, movie or glTF file holds",
          "Prints what a scene, movie or glTF file holds, as key: value lines: for a movie its frame count, "
@@ -110,7 +115,7 @@ const std::vector<CommandSpec>& all_commands() {
          "Opens a window showing a frame of a scene or movie file, rendered at a quarter of the resolution "
          "at once, then at full resolution (the same image as 'firsthit render' gives).",
          {"--frame", "--camera", "--animation", "--fps", "--exposure", "--resolution", "--scale", "--spp", "--depth",
-          "--precision", "--adaptive", "--aa-threshold", "--aa-samples", "--no-prune", "--threads"},
+          "--precision", "--adaptive", "--aa-threshold", "--aa-samples", "--no-mipmaps", "--no-prune", "--threads"},
          "keys:\n"
          "  P             switch camera projection: a scene file shows its next camera with the other\n"
          "                projection (orthographic <-> perspective); a movie keeps its camera path\n"

@@ -35,6 +35,9 @@ const std::vector<Flag>& all_flags() {
          "rendered again with --aa-samples samples"},
         {"--aa-threshold", "", "X", "the adaptive anti-aliasing threshold, 0..255 (default 8)"},
         {"--aa-samples", "", "N", "samples of a pixel adaptive anti-aliasing refines (default 16)"},
+        {"--no-mipmaps", "", "",
+         "read every texture as when magnified, at the hit, instead of over each ray's footprint from its "
+         "mipmaps (faster; textures seen from afar alias)"},
         {"--no-prune", "", "",
          "debug: simulate every effect asked for, even those the effect plan proves cannot change a "
          "pixel (the same image, slower)"},

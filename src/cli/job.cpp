@@ -26,6 +26,7 @@ void apply_quality_flags(const Args& args, RenderSettings& s) {
         args.integer("--spp", s.samples_per_pixel, 1, Limits::max_samples_per_pixel);
     s.max_depth = args.integer("--depth", s.max_depth, 0, Limits::max_depth);
     s.prune = !args.has("--no-prune");
+    if (args.has("--no-mipmaps")) s.mipmaps = false;
     if (args.has("--adaptive")) s.adaptive = true;
     s.adaptive_samples =
         args.integer("--aa-samples", s.adaptive_samples, 1, Limits::max_samples_per_pixel);

@@ -24,7 +24,7 @@ JobRequest job_request_from_args(const Args& args);
 // --resolution WxH or --scale F (not both); neither: no override.
 SizeOverride size_from_args(const Args& args);
 
-// --spp, --depth, --precision, --adaptive, --aa-* and --no-prune on top of
+// --spp, --depth, --precision, --adaptive, --aa-*, --no-mipmaps and --no-prune on top of
 // the file's settings.
 void apply_quality_flags(const Args& args, RenderSettings& settings);
 

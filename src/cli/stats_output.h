@@ -36,6 +36,7 @@ inline void print_plan(std::ostream& out, const EffectPlan& plan) {
 inline void print_sampling(std::ostream& out, const RenderSettings& s, const FrameResult& r) {
     out << "samples_per_pixel: " << s.samples_per_pixel << "\n"
         << "adaptive: " << (s.adaptive ? "on" : "off") << "\n";
+    if (!s.mipmaps) out << "mipmaps: off\n";
     if (!s.adaptive) return;
     out << "adaptive_threshold: " << s.adaptive_threshold << "\n"
         << "adaptive_samples: " << s.adaptive_samples << "\n"

@@ -39,7 +39,7 @@ AccuracyReport sweep_accuracy(const Scene& scene, const Camera& camera, const Re
             ms.push_back(r.render_ms);
         }
         const ImageError error = compare_images(r.image, reference.image);
-        const bool sampling = name == "spp" || name == "adaptive";
+        const bool sampling = name == "spp" || name == "adaptive" || name == "mipmaps";
         rows.push_back({name, s, median(ms), r.counts.total(), r.refined_pixels, error,
                         sampling ? error : compare_images(r.image, one_sample.image)});
         if (measured) measured(int(rows.size()) - 1);
@@ -69,6 +69,14 @@ AccuracyReport sweep_accuracy(const Scene& scene, const Camera& camera, const Re
         s.precision = p;
         measure("precision", s);
     }
+    // Texture filtering, where a texture may be seen from afar: read as
+    // magnified, then from its mipmaps over each ray's footprint.
+    if (std::any_of(scene.textures.begin(), scene.textures.end(), [](const Texture& t) { return t.minifies(); }))
+        for (const bool mipmaps : {false, true}) {
+            RenderSettings s = base;
+            s.mipmaps = mipmaps;
+            measure("mipmaps", s);
+        }
     return report;
 }
 

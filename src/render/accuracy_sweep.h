@@ -1,7 +1,7 @@
 // What each accuracy knob costs (the promise "error next to time"): a
 // converged reference, then samples per pixel (uniform and adaptive), glazing
-// depth and precision swept, each with its median render time, rays and
-// error. `firsthit accuracy` prints the rows as CSV and plots them.
+// depth, precision and (where a texture may be seen from afar) mipmaps
+// swept, each with its median render time, rays and error. `firsthit accuracy` prints the rows as CSV and plots them.
 #pragma once
 
 #include <cstdint>
@@ -21,7 +21,7 @@ struct AccuracyOptions {
 };
 
 struct AccuracyRow {
-    std::string knob;  // "reference", "spp", "adaptive", "depth" or "precision"
+    std::string knob;  // "reference", "spp", "adaptive", "depth", "precision" or "mipmaps"
     RenderSettings settings;
     double ms = 0;
     std::uint64_t rays = 0;

@@ -70,6 +70,12 @@ EffectPlan plan_effects(const Scene& scene, const Effects& asked, int max_depth,
     return plan;
 }
 
+EffectPlan plan_effects(const Scene& scene, const RenderSettings& settings) {
+    EffectPlan plan = plan_effects(scene, settings.effects, settings.max_depth, settings.prune);
+    plan.mipmaps = settings.mipmaps;
+    return plan;
+}
+
 unsigned shader_features(const EffectPlan& plan) {
     return (plan.effects.shadows ? kShadows : 0u) | (plan.effects.specular ? kSpecular : 0u) |
            (plan.effects.glazing ? kGlazing : 0u);

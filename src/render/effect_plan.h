@@ -23,6 +23,7 @@ struct EffectPlan {
     Effects effects;      // what is simulated
     int max_depth = 0;    // 0 when glazing is not simulated
     bool pruned = true;   // false: everything asked for is simulated (debug)
+    bool mipmaps = true;  // RenderSettings::mipmaps: footprints worked out where a texture minifies
     // Why each effect asked for, or each light, is not simulated: "glazing: no
     // glazed material", "light 'spot': off".
     std::vector<std::string> skipped;
@@ -38,6 +39,8 @@ struct EffectPlan {
 // every light, on or off (at zero weight when off): the image is the same
 // bytes, only slower. Tests compare the two.
 EffectPlan plan_effects(const Scene& scene, const Effects& asked, int max_depth, bool prune = true);
+// The plan for a render's settings: their effects, depth, pruning and mipmaps.
+EffectPlan plan_effects(const Scene& scene, const RenderSettings& settings);
 
 // Shader variants: one bit per effect that changes the inner loop.
 enum ShaderFeature : unsigned {

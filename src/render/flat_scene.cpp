@@ -90,8 +90,8 @@ FlatScene<T> FlatScene<T>::build(const Scene& scene, const EffectPlan& plan,
 
     if (f.textured) f.textures = scene.textures;
     // Footprints are worked out only where a texture the shading reads may
-    // be seen from far away.
-    auto minifies = [&](int t) { return t >= 0 && scene.textures[size_t(t)].minifies(); };
+    // be seen from far away, and mipmaps are not switched off.
+    auto minifies = [&](int t) { return plan.mipmaps && t >= 0 && scene.textures[size_t(t)].minifies(); };
     for (const MaterialShading<T>& m : f.shading)
         f.minified |= minifies(m.texture) || minifies(m.emissive_texture) || minifies(m.occlusion_texture) ||
                       minifies(m.normal_texture) || minifies(m.metal_rough_texture);

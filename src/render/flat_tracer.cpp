@@ -12,7 +12,7 @@ namespace {
 class FlatTracer final : public PreparedTracer {
 public:
     FlatTracer(const Scene& scene, const RenderSettings& settings, ThreadPool* pool) : settings_(settings) {
-        const EffectPlan plan = plan_effects(scene, settings.effects, settings.max_depth, settings.prune);
+        const EffectPlan plan = plan_effects(scene, settings);
         if (settings.precision == Precision::float32)
             float_ = std::make_unique<FlatScene<float>>(FlatScene<float>::build(scene, plan, pool));
         else
@@ -22,7 +22,7 @@ public:
     std::unique_ptr<PreparedTracer> for_frame(const Scene& frame, ShapeChanges moved, ThreadPool* pool) const override {
         auto p = std::unique_ptr<FlatTracer>(new FlatTracer());
         p->settings_ = settings_;
-        const EffectPlan plan = plan_effects(frame, settings_.effects, settings_.max_depth, settings_.prune);
+        const EffectPlan plan = plan_effects(frame, settings_);
         auto next = [&](const auto& flat) {
             using Flat = std::decay_t<decltype(*flat)>;
             auto geometry = flat->geometry;

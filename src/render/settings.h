@@ -57,6 +57,11 @@ struct RenderSettings {
     // Debug: false simulates every effect asked for, even those the effect
     // plan proves cannot change a pixel (render/effect_plan.h). Same bytes.
     bool prune = true;
+    // Textures seen from afar read over each ray's footprint from their
+    // mipmaps, as their files' minFilter asks (docs/gltf.md, "Textures");
+    // false: every texture read as when magnified, one texel or four at
+    // the hit (the accuracy knob --no-mipmaps: faster, aliased).
+    bool mipmaps = true;
     Effects effects;  // asked for: the file's `effects:` list
 };
 

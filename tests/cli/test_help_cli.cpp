@@ -4,7 +4,10 @@
 // Args::parse takes exactly those.
 #include <gtest/gtest.h>
 
+#include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/args.h"
 #include "cli/flags.h"
@@ -108,8 +111,40 @@ TEST(HelpCli, AccuracyHelpExplainsEveryColumn) {
         EXPECT_NE(help.find("  " + column + " "), std::string::npos) << column << " is not explained";
         at = end + 1;
     }
-    EXPECT_EQ(columns, 13u);
+    EXPECT_EQ(columns, 14u);
     EXPECT_NE(help.find("Which setting for which purpose"), std::string::npos);
+    // The report's scene has no texture: no mipmaps rows, every row's mipmaps 1.
+    EXPECT_EQ(csv.find("\nmipmaps,"), std::string::npos);
+    EXPECT_EQ(csv.find(",0\n"), std::string::npos);
+}
+
+TEST(HelpCli, AccuracyWeighsMipmapsWhereATextureIsSeenFromAfar) {
+    // The checkerboard floor receding to the horizon: one sample with its
+    // mipmaps, and one without (--no-mipmaps), each a row; the mipmaps are
+    // the more exact against 16 samples.
+    const std::string dir = fresh_dir("accuracy_mipmaps").string();
+    const auto table = run_firsthit("accuracy " + source_path("animations/gltf/checker_floor.gltf") +
+                                    " --resolution 96x54 --reference-spp 16 --max-spp 1 --runs 1 --csv " + dir +
+                                    "/a.csv");
+    ASSERT_EQ(table.status, 0) << table.err;
+    std::istringstream csv(slurp(dir + "/a.csv"));
+    std::map<int, double> psnr;  // by the mipmaps column
+    for (std::string line; std::getline(csv, line);) {
+        if (line.rfind("mipmaps,", 0) != 0) continue;
+        std::vector<std::string> cells;
+        std::istringstream row(line);
+        for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+        ASSERT_EQ(cells.size(), 14u) << line;
+        EXPECT_EQ(cells[1], "1") << line;  // one sample a pixel
+        psnr[std::stoi(cells[13])] = std::stod(cells[8]);
+    }
+    ASSERT_EQ(psnr.size(), 2u);
+    EXPECT_GT(psnr[1], psnr[0] + 3) << "with mipmaps " << psnr[1] << " dB, without " << psnr[0];
+    // And a render says it went without them.
+    const auto render = run_firsthit("render " + source_path("animations/gltf/checker_floor.gltf") +
+                                     " --resolution 32x18 --no-mipmaps --stats -o " + dir + "/f.png");
+    ASSERT_EQ(render.status, 0) << render.err;
+    EXPECT_NE(render.out.find("mipmaps: off\n"), std::string::npos) << render.out;
 }
 
 }  // namespace

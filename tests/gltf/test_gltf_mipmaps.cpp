@@ -396,6 +396,31 @@ TEST(GltfMipmaps, TheConeGoesOnPastAClearPane) {
     }
 }
 
+TEST(GltfMipmaps, WithoutMipmapsEveryTextureIsReadAsMagnified) {
+    // --no-mipmaps (RenderSettings::mipmaps false): the checkerboard, seen
+    // from far through LINEAR_MIPMAP_LINEAR, comes out as the file whose
+    // sampler says LINEAR both ways renders it -- the same bytes, not the
+    // mean grey the mipmaps give -- at 1 and 4 samples, float and double.
+    const Scene mipmapped = lit(checker_file(sampler_json(kRepeat, kRepeat, kLinear, kLinearMipmapLinear)));
+    const Scene linear = lit(checker_file(sampler_json(kRepeat, kRepeat, kLinear, kMinLinear)));
+    for (Precision p : kPrecisions)
+        for (const int spp : {1, 4}) {
+            RenderSettings on, off;
+            on.precision = off.precision = p;
+            on.samples_per_pixel = off.samples_per_pixel = spp;
+            off.mipmaps = false;
+            const std::string what = std::string(precision_name(p)) + ", " + std::to_string(spp) + " samples";
+            const Image without = render_frame(mipmapped, top_camera(), off, nullptr).image;
+            EXPECT_EQ(without.rgb, render_frame(linear, top_camera(), on, nullptr).image.rgb) << what;
+            EXPECT_NE(without.rgb, render_frame(mipmapped, top_camera(), on, nullptr).image.rgb) << what;
+        }
+    EXPECT_FALSE(FlatScene<double>::build(mipmapped, plan_effects(mipmapped, [] {
+                     RenderSettings off;
+                     off.mipmaps = false;
+                     return off;
+                 }())).minified);
+}
+
 TEST(GltfMipmaps, SupersamplingNarrowsTheCone) {
     // 4 samples a pixel: each stands for half the pixel's width, lambda =
     // 2 -- level 2, again the mean 188 -- and the samples, all grey,
