@@ -32,14 +32,20 @@ inline StrataGrid strata_for(int n) {
     return {n / ny, ny};
 }
 
-// A 64-bit finaliser (splitmix64): a cheap, well-mixed hash -- of one
-// number, or lane by lane of a vector of them.
-template <typename U = std::uint64_t>
-inline U mix64(U z) {
+// A 64-bit finaliser (splitmix64): a cheap, well-mixed hash, in place -- of
+// one number, or lane by lane of a vector of them (taken by reference: a
+// vector wider than the level's registers passed by value changes the ABI).
+template <typename U>
+inline void mix64_in_place(U& z) {
     z += 0x9e3779b97f4a7c15ull;
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
+    z ^= z >> 31;
+}
+
+inline std::uint64_t mix64(std::uint64_t z) {
+    mix64_in_place(z);
+    return z;
 }
 
 // A number in [0, 1) from the top 24 bits: exact in float and double alike.

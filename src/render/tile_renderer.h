@@ -170,19 +170,18 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
             px += 0.5, py += 0.5;
         } else {
             Doubles lx, ly;
-            Seeds h;
+            Seeds hx, hy;
             std::memcpy(&lx, cx, sizeof lx);
             std::memcpy(&ly, cy, sizeof ly);
-            std::memcpy(&h, seed, sizeof h);
+            std::memcpy(&hx, seed, sizeof hx);
+            mix64_in_place(hx);
+            hy = hx;
+            mix64_in_place(hy);
             // unit_from_bits: the top 24 bits, through 32-bit integers,
             // which every x86-64 level converts in one instruction.
-            auto unit_lanes = [](const Seeds& bits) FH_HOT_LAMBDA {
-                return __builtin_convertvector(__builtin_convertvector(bits >> 40, typename WideLanes<T>::Ints),
-                                               Doubles) * 0x1p-24;
-            };
-            h = mix64(h);
-            px += (lx + unit_lanes(h)) * unit;
-            py += (ly + unit_lanes(mix64(h))) * unit;
+            using Ints = typename WideLanes<T>::Ints;
+            px += (lx + __builtin_convertvector(__builtin_convertvector(hx >> 40, Ints), Doubles) * 0x1p-24) * unit;
+            py += (ly + __builtin_convertvector(__builtin_convertvector(hy >> 40, Ints), Doubles) * 0x1p-24) * unit;
         }
         return camera.generate(__builtin_convertvector(px, Lanes<T>), __builtin_convertvector(py, Lanes<T>));
     };
