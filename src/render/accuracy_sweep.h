@@ -1,7 +1,8 @@
 // What each accuracy knob costs (the promise "error next to time"): a
 // converged reference, then samples per pixel (uniform and adaptive), glazing
 // depth, precision and (where a texture may be seen from afar) mipmaps
-// swept, each with its median render time, rays and error. `firsthit accuracy` prints the rows as CSV and plots them.
+// swept, each with its median render time, rays and error. `firsthit
+// accuracy` prints the rows as CSV and plots them.
 #pragma once
 
 #include <cstdint>

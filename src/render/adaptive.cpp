@@ -1,6 +1,5 @@
 #include "render/adaptive.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace fh {
