@@ -66,12 +66,23 @@ public:
 
     int operator()(int i) const {
         unsigned v = unsigned(i);
-        do {
-            v = ((v ^ a_) * m1_) & mask_;
-            v ^= v >> ((bits_ + 1) / 2);
-            v = (v * m2_ + b_) & mask_;
-        } while (v >= count_);
+        do step(v);
+        while (v >= count_);
         return int(v);
+    }
+
+    // Whether every value lands in [0, count) at the first step: count is
+    // a power of two. Then `step` alone is the permutation, and it can run
+    // lane by lane.
+    bool one_step() const { return count_ == mask_ + 1; }
+
+    // One application of the bijection, in place: to one number or to a
+    // vector of unsigned lanes (by reference, as mix64_in_place).
+    template <typename V>
+    void step(V& v) const {
+        v = ((v ^ a_) * m1_) & mask_;
+        v ^= v >> ((bits_ + 1) / 2);
+        v = (v * m2_ + b_) & mask_;
     }
 
 private:
@@ -107,6 +118,28 @@ public:
 
     // The width of a sub-cell, a pixel's 1 / n.
     double unit() const { return 1.0 / double(grid_.nx * grid_.ny); }
+
+    // Whether cells_at_once applies: nx and ny powers of two (4, 8, 16, 64,
+    // 256 samples ...), so that each permutation is one step.
+    bool at_once() const { return row_of_column_.one_step() && column_of_row_.one_step(); }
+
+    // The cells of the samples first, first + 1, ... one a lane, at once
+    // (at_once() only): x and y as next_cell gives them, and their seeds.
+    // U: a vector of unsigned 32-bit lanes, S: of 64-bit ones, as many.
+    template <typename U, typename S>
+    void cells_at_once(int first, U& x, U& y, S& seed) const {
+        U s;
+        for (int i = 0; i < int(sizeof(U) / sizeof(unsigned)); ++i) s[i] = unsigned(first + i);
+        const unsigned log_nx = unsigned(__builtin_ctz(unsigned(grid_.nx)));
+        U sx = s & unsigned(grid_.nx - 1), sy = s >> log_nx;
+        seed = __builtin_convertvector(s, S) * 0xd1b54a32d192ed03ull ^ key_;
+        x = sx * unsigned(grid_.ny);
+        y = sy * unsigned(grid_.nx);
+        column_of_row_.step(sy);  // now each lane's sub-column
+        row_of_column_.step(sx);  // and sub-row
+        x += sy;
+        y += sx;
+    }
 
     // Any one sample.
     SampleOffset operator[](int sample) const {

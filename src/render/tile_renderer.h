@@ -25,13 +25,14 @@ namespace detail {
 
 inline std::uint8_t to_byte(double v) { return std::uint8_t(std::floor(v + 0.5)); }
 
-// A packet's lanes widened to double, as 32-bit integers, as bytes and as
-// 64-bit seeds.
+// A packet's lanes widened to double, as 32-bit integers (signed and not),
+// as bytes and as 64-bit seeds.
 template <typename T>
 struct WideLanes {
     typedef double Doubles __attribute__((vector_size(kLanes<T> * sizeof(double))));
     typedef std::int32_t Ints __attribute__((vector_size(kLanes<T> * sizeof(std::int32_t))));
     typedef std::uint8_t Bytes __attribute__((vector_size(kLanes<T>)));
+    typedef std::uint32_t Uints __attribute__((vector_size(kLanes<T> * sizeof(std::uint32_t))));
     typedef std::uint64_t Seeds __attribute__((vector_size(kLanes<T> * sizeof(std::uint64_t))));
 };
 
@@ -143,43 +144,58 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
     int pixel = 0, sample = 0;  // the next sample to take
     PixelSamples offsets(pixels[0].x, pixels[0].y, grid);  // the pixel's
     // The camera rays of the next n samples (past the last sample, the lanes
-    // repeat it, inactive): each lane's cell in turn, then every lane's
-    // jitter at once (PixelSamples' `jittered`, lane by lane).
+    // repeat it, inactive): every lane's cell at once where each packet is
+    // a pixel's and the strata come in powers of two (8, 16, 64 ...
+    // samples), else each lane's in turn; then every lane's jitter at once
+    // (PixelSamples' `jittered`, lane by lane).
     using Doubles = typename WideLanes<T>::Doubles;
+    using Ints = typename WideLanes<T>::Ints;
     using Seeds = typename WideLanes<T>::Seeds;
     const double unit = offsets.unit();
+    const bool whole_packets = spp % W == 0 && offsets.at_once();
     auto take = [&](int n) FH_HOT_LAMBDA {
-        alignas(64) double x[W], y[W], cx[W], cy[W];
-        alignas(64) std::uint64_t seed[W];
-        for (int i = 0; i < W; ++i) {
-            if (i < n) {
-                const SampleCell c = offsets.next_cell();
-                x[i] = pixels[pixel].x, y[i] = pixels[pixel].y, cx[i] = c.x, cy[i] = c.y, seed[i] = c.seed;
-                if (++sample == spp) {
-                    sample = 0;
-                    if (++pixel < count) offsets = PixelSamples(pixels[pixel].x, pixels[pixel].y, grid);
-                }
-            } else {
-                x[i] = x[i - 1], y[i] = y[i - 1], cx[i] = cx[i - 1], cy[i] = cy[i - 1], seed[i] = seed[i - 1];
+        Doubles px, py, lx, ly;
+        Seeds hx;
+        if (whole_packets) {
+            typename WideLanes<T>::Uints cx, cy;
+            offsets.cells_at_once(sample, cx, cy, hx);
+            px = Doubles{} + double(pixels[pixel].x);
+            py = Doubles{} + double(pixels[pixel].y);
+            lx = __builtin_convertvector(__builtin_convertvector(cx, Ints), Doubles);
+            ly = __builtin_convertvector(__builtin_convertvector(cy, Ints), Doubles);
+            if ((sample += W) == spp) {
+                sample = 0;
+                if (++pixel < count) offsets = PixelSamples(pixels[pixel].x, pixels[pixel].y, grid);
             }
-        }
-        Doubles px, py;
-        std::memcpy(&px, x, sizeof px);
-        std::memcpy(&py, y, sizeof py);
-        if (spp == 1) {  // the pixel's centre
-            px += 0.5, py += 0.5;
         } else {
-            Doubles lx, ly;
-            Seeds hx, hy;
+            alignas(64) double x[W], y[W], cx[W], cy[W];
+            alignas(64) std::uint64_t seed[W];
+            for (int i = 0; i < W; ++i) {
+                if (i < n) {
+                    const SampleCell c = offsets.next_cell();
+                    x[i] = pixels[pixel].x, y[i] = pixels[pixel].y, cx[i] = c.x, cy[i] = c.y, seed[i] = c.seed;
+                    if (++sample == spp) {
+                        sample = 0;
+                        if (++pixel < count) offsets = PixelSamples(pixels[pixel].x, pixels[pixel].y, grid);
+                    }
+                } else {
+                    x[i] = x[i - 1], y[i] = y[i - 1], cx[i] = cx[i - 1], cy[i] = cy[i - 1], seed[i] = seed[i - 1];
+                }
+            }
+            std::memcpy(&px, x, sizeof px);
+            std::memcpy(&py, y, sizeof py);
             std::memcpy(&lx, cx, sizeof lx);
             std::memcpy(&ly, cy, sizeof ly);
             std::memcpy(&hx, seed, sizeof hx);
+        }
+        if (spp == 1) {  // the pixel's centre
+            px += 0.5, py += 0.5;
+        } else {
             mix64_in_place(hx);
-            hy = hx;
+            Seeds hy = hx;
             mix64_in_place(hy);
             // unit_from_bits: the top 24 bits, through 32-bit integers,
             // which every x86-64 level converts in one instruction.
-            using Ints = typename WideLanes<T>::Ints;
             px += (lx + __builtin_convertvector(__builtin_convertvector(hx >> 40, Ints), Doubles) * 0x1p-24) * unit;
             py += (ly + __builtin_convertvector(__builtin_convertvector(hy >> 40, Ints), Doubles) * 0x1p-24) * unit;
         }

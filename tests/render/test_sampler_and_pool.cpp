@@ -81,6 +81,33 @@ TEST(Sampler, CellsInOrderGiveTheSamplesOneByOne) {
     }
 }
 
+TEST(Sampler, CellsOfAWholePacketAtOnceAreTheCellsInOrder) {
+    // Where the strata come in powers of two, the renderer takes a packet's
+    // cells lane by lane at once: the same cells and seeds as next_cell.
+    typedef unsigned Cells __attribute__((vector_size(8 * sizeof(unsigned))));
+    typedef std::uint64_t Seeds __attribute__((vector_size(8 * sizeof(std::uint64_t))));
+    for (int n : {8, 16, 32, 64, 256}) {
+        const StrataGrid g = strata_for(n);
+        for (int p = 0; p < 20; ++p) {
+            PixelSamples in_order(13 * p, 40 - p, g);
+            const PixelSamples at_once(13 * p, 40 - p, g);
+            ASSERT_TRUE(at_once.at_once()) << n;
+            for (int first = 0; first < n; first += 8) {
+                Cells x, y;
+                Seeds seed;
+                at_once.cells_at_once(first, x, y, seed);
+                for (int i = 0; i < 8; ++i) {
+                    const SampleCell c = in_order.next_cell();
+                    ASSERT_EQ(int(x[i]), c.x) << n << " samples, sample " << first + i;
+                    ASSERT_EQ(int(y[i]), c.y) << n << " samples, sample " << first + i;
+                    ASSERT_EQ(seed[i], c.seed) << n << " samples, sample " << first + i;
+                }
+            }
+        }
+    }
+    for (int n : {3, 6, 7, 12, 97}) EXPECT_FALSE(PixelSamples(0, 0, strata_for(n)).at_once()) << n;
+}
+
 TEST(Sampler, PermutationsAreBijectionsForAnyCountAndKey) {
     for (int count = 1; count <= 40; ++count)
         for (std::uint64_t k = 0; k < 200; ++k) {
