@@ -77,7 +77,7 @@ struct FlatScene {
     std::vector<LightTerms<T>> spot_terms;
     std::vector<Texture> textures;  // Scene::textures, when some material is textured
     bool textured = false;          // some material is (instances only: glTF's)
-    bool minified = false;          // some texture the shading reads is read by its footprint (Texture::minifies)
+    bool minified = false;          // some texture the shading reads is read by its footprint (Texture::minifies; never with mipmaps off)
     bool blended = false;           // some instance's material is see-through (glTF's BLEND)
     bool metal_rough = false;       // some material's metallic-roughness texture is read
     bool fractional_exponents = false;  // some material has whole == false: std::pow needed

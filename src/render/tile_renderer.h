@@ -145,8 +145,9 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
     PixelSamples offsets(pixels[0].x, pixels[0].y, grid);  // the pixel's
     // The camera rays of the next n samples (past the last sample, the lanes
     // repeat it, inactive): every lane's cell at once where each packet is
-    // a pixel's and the strata come in powers of two (8, 16, 64 ...
-    // samples), else each lane's in turn; then every lane's jitter at once
+    // a pixel's (spp a multiple of the lanes) and the strata come in powers
+    // of two (16, 64, 256 ... samples at 16 lanes; 8, 32 ... too at 8),
+    // else each lane's in turn; then every lane's jitter at once
     // (PixelSamples' `jittered`, lane by lane).
     using Doubles = typename WideLanes<T>::Doubles;
     using Ints = typename WideLanes<T>::Ints;

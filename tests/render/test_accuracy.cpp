@@ -162,8 +162,9 @@ TEST(Accuracy, RefinesWhatEightNeighboursCheckedOneByOneWouldRefine) {
     for (const auto [w, h] : {std::pair{1, 1}, {1, 6}, {6, 1}, {2, 2}, {7, 3}, {33, 17}})
         for (const int spread : {4, 20, 256}) {  // how far the bytes wander from pixel to pixel
             Image img(w, h);
-            for (auto& b : img.rgb) b = std::uint8_t(std::min(255, 100 + int(rng() % unsigned(spread))));
-            for (const double threshold : {-1.0, 0.0, 0.5, 3.0, 8.0, 8.5, 19.0, 254.5, 255.0, 300.0}) {
+            const int base = spread == 256 ? 0 : 100;  // the widest: every byte, gaps up to 255
+            for (auto& b : img.rgb) b = std::uint8_t(base + int(rng() % unsigned(spread)));
+            for (const double threshold : {-1.0, 0.0, 0.5, 3.0, 8.0, 8.5, 19.0, 200.0, 254.5, 255.0, 300.0, std::nan("")}) {
                 std::vector<std::pair<int, int>> got;
                 for (const PixelRef& p : pixels_to_refine(img, threshold)) got.push_back({p.x, p.y});
                 EXPECT_EQ(got, by_hand(img, threshold)) << w << " x " << h << ", spread " << spread

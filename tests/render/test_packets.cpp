@@ -68,11 +68,27 @@ Camera small(Camera c) {
 
 TEST(Packets, RenderFrameIsEachPixelsRaysTracedOneAtATime) {
     const Scene scene = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml").scene;
+    // 3 samples: cells one lane at a time; 4 and 8: the same in float
+    // (16 lanes), cells of whole packets at once in double (8 lanes); 16:
+    // at once in both.
     for (const Camera& camera : scene.cameras)
-        for (const int spp : {1, 4}) {
+        for (const int spp : {1, 3, 4, 8, 16}) {
             expect_same_as_one_ray_at_a_time<double>(scene, small(camera), spp);
             expect_same_as_one_ray_at_a_time<float>(scene, small(camera), spp);
         }
+}
+
+TEST(Packets, RefiningWithOneSampleRendersTheCentresAgain) {
+    // Adaptive anti-aliasing with one sample a refined pixel: the refined
+    // pixels' one sample is their centre, as in the first pass.
+    const Scene scene = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml").scene;
+    RenderSettings one, refined;
+    refined.adaptive = true;
+    refined.adaptive_samples = 1;
+    const Camera camera = small(scene.cameras.front());
+    const FrameResult r = render_frame(scene, camera, refined, nullptr);
+    EXPECT_GT(r.refined_pixels, 100u);
+    EXPECT_EQ(r.image.rgb, render_frame(scene, camera, one, nullptr).image.rgb);
 }
 
 TEST(Packets, SameWithANarrowSpotCone) {
