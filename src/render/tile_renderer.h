@@ -154,6 +154,11 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
     using Seeds = typename WideLanes<T>::Seeds;
     const double unit = offsets.unit();
     const bool whole_packets = spp % W == 0 && offsets.at_once();
+    auto taken = [&](int k) FH_HOT_LAMBDA {  // k more samples of the pixel taken: on to the next pixel?
+        if ((sample += k) < spp) return;
+        sample = 0;
+        if (++pixel < count) offsets = PixelSamples(pixels[pixel].x, pixels[pixel].y, grid);
+    };
     auto take = [&](int n) FH_HOT_LAMBDA {
         Doubles px, py, lx, ly;
         Seeds hx;
@@ -164,10 +169,7 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
             py = Doubles{} + double(pixels[pixel].y);
             lx = __builtin_convertvector(__builtin_convertvector(cx, Ints), Doubles);
             ly = __builtin_convertvector(__builtin_convertvector(cy, Ints), Doubles);
-            if ((sample += W) == spp) {
-                sample = 0;
-                if (++pixel < count) offsets = PixelSamples(pixels[pixel].x, pixels[pixel].y, grid);
-            }
+            taken(W);
         } else {
             alignas(64) double x[W], y[W], cx[W], cy[W];
             alignas(64) std::uint64_t seed[W];
@@ -175,10 +177,7 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
                 if (i < n) {
                     const SampleCell c = offsets.next_cell();
                     x[i] = pixels[pixel].x, y[i] = pixels[pixel].y, cx[i] = c.x, cy[i] = c.y, seed[i] = c.seed;
-                    if (++sample == spp) {
-                        sample = 0;
-                        if (++pixel < count) offsets = PixelSamples(pixels[pixel].x, pixels[pixel].y, grid);
-                    }
+                    taken(1);
                 } else {
                     x[i] = x[i - 1], y[i] = y[i - 1], cx[i] = cx[i - 1], cy[i] = cy[i - 1], seed[i] = seed[i - 1];
                 }
