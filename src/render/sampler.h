@@ -16,6 +16,9 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
+
+#include "core/vec.h"  // FH_HOT_INLINE
 
 namespace fh {
 
@@ -57,11 +60,9 @@ inline double unit_from_bits(std::uint64_t bits) { return double(bits >> 40) * 0
 // falls in [0, count), which the cycle through any i there reaches.
 class Permutation {
 public:
-    Permutation(int count, std::uint64_t key)
-        : count_(unsigned(count)), a_(unsigned(key)), m1_(unsigned(key >> 16) | 1u),
-          m2_(unsigned(key >> 32) | 1u), b_(unsigned(key >> 48)) {
+    Permutation(int count, std::uint64_t key) : count_(unsigned(count)) {
+        key_parts(key, a_, m1_, m2_, b_);
         while ((1u << bits_) < count_) ++bits_;
-        mask_ = (1u << bits_) - 1;
     }
 
     int operator()(int i) const {
@@ -71,23 +72,39 @@ public:
         return int(v);
     }
 
-    // Whether every value lands in [0, count) at the first step: count is
-    // a power of two. Then `step` alone is the permutation, and it can run
-    // lane by lane.
-    bool one_step() const { return count_ == mask_ + 1; }
-
     // One application of the bijection, in place: to one number or to a
-    // vector of unsigned lanes (by reference, as mix64_in_place).
+    // vector of unsigned lanes (by reference, as mix64_in_place). Where
+    // count is a power of two, every value lands in [0, count) at the first
+    // step: `step` alone is the permutation, and it can run lane by lane.
     template <typename V>
     void step(V& v) const {
-        v = ((v ^ a_) * m1_) & mask_;
-        v ^= v >> ((bits_ + 1) / 2);
-        v = (v * m2_ + b_) & mask_;
+        step(v, a_, m1_, m2_, b_, bits_);
+    }
+
+    // The same step with the key's four parts given (each lane its own
+    // permutation, for vectors), of a count of 2^bits.
+    template <typename V, typename K>
+    static void step(V& v, const K& a, const K& m1, const K& m2, const K& b, unsigned bits) {
+        const unsigned mask = (1u << bits) - 1;
+        v = ((v ^ a) * m1) & mask;
+        v ^= v >> ((bits + 1) / 2);
+        v = (v * m2 + b) & mask;
+    }
+
+    // The four parts of a 64-bit key, its low 32 bits and three shifts of
+    // it: of one key, or lane by lane of a vector of them.
+    template <typename U, typename S>
+    static void key_parts(const S& key, U& a, U& m1, U& m2, U& b) {
+        auto low = [](const S& k) {
+            if constexpr (std::is_arithmetic_v<S>) return U(k);
+            else return __builtin_convertvector(k, U);
+        };
+        a = low(key), m1 = low(key >> 16) | 1u, m2 = low(key >> 32) | 1u, b = low(key >> 48);
     }
 
 private:
-    unsigned count_, a_, m1_, m2_, b_;
-    unsigned bits_ = 0, mask_ = 0;
+    unsigned count_, a_ = 0, m1_ = 0, m2_ = 0, b_ = 0;
+    unsigned bits_ = 0;
 };
 
 struct SampleOffset {
@@ -108,38 +125,29 @@ inline SampleOffset jittered(const SampleCell& c, double unit) {
     return {(c.x + unit_from_bits(h)) * unit, (c.y + unit_from_bits(mix64(h))) * unit};
 }
 
+// A pixel's key, the keys of its two permutations (xor'd in, then mixed)
+// and its samples' seeds: of one pixel, or lane by lane (written through a
+// reference, as mix64_in_place).
+template <typename S>
+inline void pixel_key(const S& x, const S& y, S& key) {
+    key = (y << 32) | x;
+    mix64_in_place(key);
+}
+inline constexpr std::uint64_t kColumnKey = 0x9e3779b97f4a7c15ull, kRowKey = 0xbf58476d1ce4e5b9ull;
+template <typename S>
+inline void sample_seed(const S& key, const S& sample, S& seed) {
+    seed = key ^ sample * 0xd1b54a32d192ed03ull;
+}
+
 // One pixel's samples, what depends on the pixel alone worked out once.
 class PixelSamples {
 public:
     PixelSamples(int px, int py, StrataGrid grid)
-        : grid_(grid), key_(mix64((std::uint64_t(std::uint32_t(py)) << 32) | std::uint32_t(px))),
-          column_of_row_(grid.ny, mix64(key_ ^ 0x9e3779b97f4a7c15ull)),
-          row_of_column_(grid.nx, mix64(key_ ^ 0xbf58476d1ce4e5b9ull)), column_(column_of_row_(0)) {}
+        : grid_(grid), key_(key_of(px, py)), column_of_row_(grid.ny, mix64(key_ ^ kColumnKey)),
+          row_of_column_(grid.nx, mix64(key_ ^ kRowKey)), column_(column_of_row_(0)) {}
 
     // The width of a sub-cell, a pixel's 1 / n.
     double unit() const { return 1.0 / double(grid_.nx * grid_.ny); }
-
-    // Whether cells_at_once applies: nx and ny powers of two (4, 8, 16, 64,
-    // 256 samples ...), so that each permutation is one step.
-    bool at_once() const { return row_of_column_.one_step() && column_of_row_.one_step(); }
-
-    // The cells of the samples first, first + 1, ... one a lane, at once
-    // (at_once() only): x and y as next_cell gives them, and their seeds.
-    // U: a vector of unsigned 32-bit lanes, S: of 64-bit ones, as many.
-    template <typename U, typename S>
-    void cells_at_once(int first, U& x, U& y, S& seed) const {
-        U s;
-        for (int i = 0; i < int(sizeof(U) / sizeof(unsigned)); ++i) s[i] = unsigned(first + i);
-        const unsigned log_nx = unsigned(__builtin_ctz(unsigned(grid_.nx)));
-        U sx = s & unsigned(grid_.nx - 1), sy = s >> log_nx;
-        seed = __builtin_convertvector(s, S) * 0xd1b54a32d192ed03ull ^ key_;
-        x = sx * unsigned(grid_.ny);
-        y = sy * unsigned(grid_.nx);
-        column_of_row_.step(sy);  // now each lane's sub-column
-        row_of_column_.step(sx);  // and sub-row
-        x += sy;
-        y += sx;
-    }
 
     // Any one sample.
     SampleOffset operator[](int sample) const {
@@ -168,8 +176,15 @@ private:
     // sub-column `column`: x = (sx + (sub-column + jitter) / ny) / nx, and
     // y alike, as one product each.
     SampleCell cell(int sample, int sx, int sy, int column) const {
-        return {sx * grid_.ny + column, sy * grid_.nx + row_of_column_(sx),
-                key_ ^ std::uint64_t(sample) * 0xd1b54a32d192ed03ull};
+        std::uint64_t seed;
+        sample_seed(key_, std::uint64_t(sample), seed);
+        return {sx * grid_.ny + column, sy * grid_.nx + row_of_column_(sx), seed};
+    }
+
+    static std::uint64_t key_of(int px, int py) {
+        std::uint64_t key;
+        pixel_key(std::uint64_t(std::uint32_t(px)), std::uint64_t(std::uint32_t(py)), key);
+        return key;
     }
 
     StrataGrid grid_;
@@ -177,6 +192,47 @@ private:
     Permutation column_of_row_, row_of_column_;
     int sample_ = 0, sx_ = 0, sy_ = 0, column_;  // next_cell()'s place
 };
+
+// Whether cells_at_once applies: nx and ny powers of two (2, 4, 8, 16, 64,
+// 256 samples ...), so that each permutation is one step.
+inline bool cells_at_once_apply(StrataGrid g) {
+    return (g.nx & (g.nx - 1)) == 0 && (g.ny & (g.ny - 1)) == 0;
+}
+
+// Many pixels' keys at once, a pixel a lane (PixelSamples' key_ and the
+// parts of its permutations' keys), for cells_at_once. U: a vector of
+// unsigned 32-bit lanes, S: of 64-bit ones, as many.
+template <typename U, typename S>
+struct PixelKeys {
+    S key;
+    U column[4], row[4];  // a, m1, m2, b of column_of_row_'s key, and of row_of_column_'s
+
+    FH_HOT_INLINE PixelKeys(const U& px, const U& py) {
+        pixel_key(__builtin_convertvector(px, S), __builtin_convertvector(py, S), key);
+        S column_key = key ^ kColumnKey, row_key = key ^ kRowKey;
+        mix64_in_place(column_key);
+        mix64_in_place(row_key);
+        Permutation::key_parts(column_key, column[0], column[1], column[2], column[3]);
+        Permutation::key_parts(row_key, row[0], row[1], row[2], row[3]);
+    }
+};
+
+// Many samples' cells at once, a sample a lane: lane i is sample s[i] of
+// the pixel of keys' lane i, its cell (x[i], y[i]) and seed as
+// PixelSamples' next_cell gives them (cells_at_once_apply(grid) only).
+template <typename U, typename S>
+FH_HOT_INLINE void cells_at_once(StrataGrid grid, const PixelKeys<U, S>& keys, const U& s, U& x, U& y, S& seed) {
+    const int log_nx = __builtin_ctz(unsigned(grid.nx)), log_ny = __builtin_ctz(unsigned(grid.ny));
+    U sx = s & unsigned(grid.nx - 1), sy = s >> log_nx;
+    sample_seed(keys.key, __builtin_convertvector(s, S), seed);
+    x = sx * unsigned(grid.ny);
+    y = sy * unsigned(grid.nx);
+    // Now each lane's sub-column, and sub-row.
+    Permutation::step(sy, keys.column[0], keys.column[1], keys.column[2], keys.column[3], unsigned(log_ny));
+    Permutation::step(sx, keys.row[0], keys.row[1], keys.row[2], keys.row[3], unsigned(log_nx));
+    x += sy;
+    y += sx;
+}
 
 inline SampleOffset sample_offset(int px, int py, int sample, StrataGrid grid) {
     return PixelSamples(px, py, grid)[sample];

@@ -144,16 +144,24 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
     int pixel = 0, sample = 0;  // the next sample to take
     PixelSamples offsets(pixels[0].x, pixels[0].y, grid);  // the pixel's
     // The camera rays of the next n samples (past the last sample, the lanes
-    // repeat it, inactive): every lane's cell at once where each packet is
-    // a pixel's (spp a multiple of the lanes) and the strata come in powers
-    // of two (16, 64, 256 ... samples at 16 lanes; 8, 32 ... too at 8),
-    // else each lane's in turn; then every lane's jitter at once
-    // (PixelSamples' `jittered`, lane by lane).
+    // repeat one of the packet's, inactive): every lane's cell at once where
+    // a packet holds whole pixels or one pixel's samples and the strata come
+    // in powers of two (2, 4, 8, 16, 64, 256 ... samples), else each lane's
+    // in turn; then every lane's jitter at once (PixelSamples' `jittered`,
+    // lane by lane).
     using Doubles = typename WideLanes<T>::Doubles;
     using Ints = typename WideLanes<T>::Ints;
     using Seeds = typename WideLanes<T>::Seeds;
-    const double unit = offsets.unit();
-    const bool whole_packets = spp % W == 0 && offsets.at_once();
+    using Uints = typename WideLanes<T>::Uints;
+    // (A vector made once: from a scalar, GCC built it in memory at every
+    // packet and waited on the load.)
+    const Doubles unit = Doubles{} + offsets.unit();
+    const bool at_once = (spp % W == 0 || W % spp == 0) && cells_at_once_apply(grid);
+    const int log_spp = __builtin_ctz(unsigned(spp));
+    Uints lane;
+    for (int i = 0; i < W; ++i) lane[i] = unsigned(i);
+    using Keys = PixelKeys<Uints, Seeds>;
+    Keys keys(lane, lane);  // at_once: the packet's pixels' (set at its first packet)
     auto taken = [&](int k) FH_HOT_LAMBDA {  // k more samples of the pixel taken: on to the next pixel?
         if ((sample += k) < spp) return;
         sample = 0;
@@ -162,14 +170,31 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
     auto take = [&](int n) FH_HOT_LAMBDA {
         Doubles px, py, lx, ly;
         Seeds hx;
-        if (whole_packets) {
-            typename WideLanes<T>::Uints cx, cy;
-            offsets.cells_at_once(sample, cx, cy, hx);
-            px = Doubles{} + double(pixels[pixel].x);
-            py = Doubles{} + double(pixels[pixel].y);
+        if (at_once) {
+            // Lane i: sample (sample + i) mod spp of the pixel (sample + i)
+            // / spp pixels on (the last pixel again past the list's end).
+            Uints ux, uy, us, cx, cy;
+            if (spp >= W) {  // one pixel's; its keys at its first packet
+                ux = Uints{} + pixels[pixel].x, uy = Uints{} + pixels[pixel].y, us = unsigned(sample) + lane;
+                if (sample == 0) keys = Keys(ux, uy);
+            } else {
+                alignas(64) std::uint32_t x[W], y[W];
+                for (int i = 0; i < W; ++i) {
+                    const PixelRef& p = pixels[std::min(pixel + ((sample + i) >> log_spp), count - 1)];
+                    x[i] = p.x, y[i] = p.y;
+                }
+                std::memcpy(&ux, x, sizeof ux);
+                std::memcpy(&uy, y, sizeof uy);
+                us = (unsigned(sample) + lane) & unsigned(spp - 1);
+                keys = Keys(ux, uy);
+            }
+            pixel += (sample + W) >> log_spp;
+            sample = (sample + W) & (spp - 1);
+            cells_at_once(grid, keys, us, cx, cy, hx);
+            px = __builtin_convertvector(__builtin_convertvector(ux, Ints), Doubles);
+            py = __builtin_convertvector(__builtin_convertvector(uy, Ints), Doubles);
             lx = __builtin_convertvector(__builtin_convertvector(cx, Ints), Doubles);
             ly = __builtin_convertvector(__builtin_convertvector(cy, Ints), Doubles);
-            taken(W);
         } else {
             alignas(64) double x[W], y[W], cx[W], cy[W];
             alignas(64) std::uint64_t seed[W];

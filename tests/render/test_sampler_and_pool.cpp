@@ -81,31 +81,35 @@ TEST(Sampler, CellsInOrderGiveTheSamplesOneByOne) {
     }
 }
 
-TEST(Sampler, CellsOfAWholePacketAtOnceAreTheCellsInOrder) {
+TEST(Sampler, CellsAtOnceAreTheCellsInOrder) {
     // Where the strata come in powers of two, the renderer takes a packet's
-    // cells lane by lane at once: the same cells and seeds as next_cell.
+    // cells lane by lane at once, each lane any sample of any pixel: the
+    // same cells and seeds as next_cell. Here 8 lanes, each a different
+    // pixel's sample, in a shuffled order.
     typedef unsigned Cells __attribute__((vector_size(8 * sizeof(unsigned))));
     typedef std::uint64_t Seeds __attribute__((vector_size(8 * sizeof(std::uint64_t))));
-    for (int n : {8, 16, 32, 64, 256}) {
+    for (int n : {1, 2, 4, 8, 16, 32, 64, 256}) {
         const StrataGrid g = strata_for(n);
+        ASSERT_TRUE(cells_at_once_apply(g)) << n;
         for (int p = 0; p < 20; ++p) {
-            PixelSamples in_order(13 * p, 40 - p, g);
-            const PixelSamples at_once(13 * p, 40 - p, g);
-            ASSERT_TRUE(at_once.at_once()) << n;
             for (int first = 0; first < n; first += 8) {
-                Cells x, y;
+                Cells px, py, s, x, y;
                 Seeds seed;
-                at_once.cells_at_once(first, x, y, seed);
+                for (int i = 0; i < 8; ++i)
+                    px[i] = unsigned(13 * p + 5 * i), py[i] = unsigned(799 - p - i), s[i] = unsigned((first + 3 * i) % n);
+                cells_at_once(g, PixelKeys<Cells, Seeds>(px, py), s, x, y, seed);
                 for (int i = 0; i < 8; ++i) {
-                    const SampleCell c = in_order.next_cell();
-                    ASSERT_EQ(int(x[i]), c.x) << n << " samples, sample " << first + i;
-                    ASSERT_EQ(int(y[i]), c.y) << n << " samples, sample " << first + i;
-                    ASSERT_EQ(seed[i], c.seed) << n << " samples, sample " << first + i;
+                    PixelSamples in_order(int(px[i]), int(py[i]), g);
+                    SampleCell c{};
+                    for (unsigned k = 0; k <= s[i]; ++k) c = in_order.next_cell();
+                    ASSERT_EQ(int(x[i]), c.x) << n << " samples, sample " << s[i];
+                    ASSERT_EQ(int(y[i]), c.y) << n << " samples, sample " << s[i];
+                    ASSERT_EQ(seed[i], c.seed) << n << " samples, sample " << s[i];
                 }
             }
         }
     }
-    for (int n : {3, 6, 7, 12, 97}) EXPECT_FALSE(PixelSamples(0, 0, strata_for(n)).at_once()) << n;
+    for (int n : {3, 6, 7, 12, 97}) EXPECT_FALSE(cells_at_once_apply(strata_for(n))) << n;
 }
 
 TEST(Sampler, PermutationsAreBijectionsForAnyCountAndKey) {
