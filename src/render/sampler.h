@@ -215,6 +215,17 @@ struct PixelKeys {
         Permutation::key_parts(column_key, column[0], column[1], column[2], column[3]);
         Permutation::key_parts(row_key, row[0], row[1], row[2], row[3]);
     }
+
+    // One pixel's keys in every lane, worked out once.
+    FH_HOT_INLINE PixelKeys(unsigned px, unsigned py) {
+        std::uint64_t k;
+        pixel_key(std::uint64_t(px), std::uint64_t(py), k);
+        unsigned c[4], r[4];
+        Permutation::key_parts(mix64(k ^ kColumnKey), c[0], c[1], c[2], c[3]);
+        Permutation::key_parts(mix64(k ^ kRowKey), r[0], r[1], r[2], r[3]);
+        key = S{} + k;
+        for (int i = 0; i < 4; ++i) column[i] = U{} + c[i], row[i] = U{} + r[i];
+    }
 };
 
 // Many samples' cells at once, a sample a lane: lane i is sample s[i] of

@@ -176,7 +176,7 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
             Uints ux, uy, us, cx, cy;
             if (spp >= W) {  // one pixel's; its keys at its first packet
                 ux = Uints{} + pixels[pixel].x, uy = Uints{} + pixels[pixel].y, us = unsigned(sample) + lane;
-                if (sample == 0) keys = Keys(ux, uy);
+                if (sample == 0) keys = Keys(unsigned(pixels[pixel].x), unsigned(pixels[pixel].y));
             } else {
                 alignas(64) std::uint32_t x[W], y[W];
                 for (int i = 0; i < W; ++i) {

@@ -110,6 +110,17 @@ TEST(Sampler, CellsAtOnceAreTheCellsInOrder) {
         }
     }
     for (int n : {3, 6, 7, 12, 97}) EXPECT_FALSE(cells_at_once_apply(strata_for(n))) << n;
+    // One pixel's keys in every lane, worked out once: the same keys.
+    for (unsigned p = 0; p < 20; ++p) {
+        const PixelKeys<Cells, Seeds> one(7 * p, 3 * p + 1), lanes(Cells{} + 7 * p, Cells{} + (3 * p + 1));
+        for (int i = 0; i < 8; ++i) {
+            ASSERT_EQ(one.key[i], lanes.key[i]);
+            for (int k = 0; k < 4; ++k) {
+                ASSERT_EQ(one.column[k][i], lanes.column[k][i]);
+                ASSERT_EQ(one.row[k][i], lanes.row[k][i]);
+            }
+        }
+    }
 }
 
 TEST(Sampler, PermutationsAreBijectionsForAnyCountAndKey) {
