@@ -161,7 +161,7 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
     Uints lane;
     for (int i = 0; i < W; ++i) lane[i] = unsigned(i);
     using Keys = PixelKeys<Uints, Seeds>;
-    Keys keys(lane, lane);  // at_once: the packet's pixels' (set at its first packet)
+    Keys keys(lane, lane);  // at_once: the keys of the packet's pixels (of a pixel of many packets: set at its first)
     auto taken = [&](int k) FH_HOT_LAMBDA {  // k more samples of the pixel taken: on to the next pixel?
         if ((sample += k) < spp) return;
         sample = 0;

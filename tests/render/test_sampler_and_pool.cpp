@@ -95,8 +95,10 @@ TEST(Sampler, CellsAtOnceAreTheCellsInOrder) {
             for (int first = 0; first < n; first += 8) {
                 Cells px, py, s, x, y;
                 Seeds seed;
-                for (int i = 0; i < 8; ++i)
-                    px[i] = unsigned(13 * p + 5 * i), py[i] = unsigned(799 - p - i), s[i] = unsigned((first + 3 * i) % n);
+                for (int i = 0; i < 8; ++i) {
+                    px[i] = unsigned(13 * p + 5 * i), py[i] = unsigned(799 - p - i);
+                    s[i] = unsigned((first + 3 * i) % n);
+                }
                 cells_at_once(g, PixelKeys<Cells, Seeds>(px, py), s, x, y, seed);
                 for (int i = 0; i < 8; ++i) {
                     PixelSamples in_order(int(px[i]), int(py[i]), g);
