@@ -207,13 +207,11 @@ struct PixelKeys {
     S key;
     U column[4], row[4];  // a, m1, m2, b of column_of_row_'s key, and of row_of_column_'s
 
+    PixelKeys() = default;
+
     FH_HOT_INLINE PixelKeys(const U& px, const U& py) {
         pixel_key(__builtin_convertvector(px, S), __builtin_convertvector(py, S), key);
-        S column_key = key ^ kColumnKey, row_key = key ^ kRowKey;
-        mix64_in_place(column_key);
-        mix64_in_place(row_key);
-        Permutation::key_parts(column_key, column[0], column[1], column[2], column[3]);
-        Permutation::key_parts(row_key, row[0], row[1], row[2], row[3]);
+        permutation_parts(key, column, row);
     }
 
     // One pixel's keys in every lane, worked out once.
@@ -221,10 +219,21 @@ struct PixelKeys {
         std::uint64_t k;
         pixel_key(std::uint64_t(px), std::uint64_t(py), k);
         unsigned c[4], r[4];
-        Permutation::key_parts(mix64(k ^ kColumnKey), c[0], c[1], c[2], c[3]);
-        Permutation::key_parts(mix64(k ^ kRowKey), r[0], r[1], r[2], r[3]);
+        permutation_parts(k, c, r);
         key = S{} + k;
         for (int i = 0; i < 4; ++i) column[i] = U{} + c[i], row[i] = U{} + r[i];
+    }
+
+private:
+    // The parts of the two permutations' keys, from the pixel's key: of
+    // one pixel (V, K scalars) or lane by lane.
+    template <typename V, typename K>
+    FH_HOT_INLINE static void permutation_parts(const K& pixel, V (&c)[4], V (&r)[4]) {
+        K column_key = pixel ^ kColumnKey, row_key = pixel ^ kRowKey;
+        mix64_in_place(column_key);
+        mix64_in_place(row_key);
+        Permutation::key_parts(column_key, c[0], c[1], c[2], c[3]);
+        Permutation::key_parts(row_key, r[0], r[1], r[2], r[3]);
     }
 };
 

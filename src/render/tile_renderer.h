@@ -161,9 +161,11 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
     Uints lane;
     for (int i = 0; i < W; ++i) lane[i] = unsigned(i);
     using Keys = PixelKeys<Uints, Seeds>;
-    Keys keys(lane, lane);  // at_once: the keys of the packet's pixels (of a pixel of many packets: set at its first)
-    auto taken = [&](int k) FH_HOT_LAMBDA {  // k more samples of the pixel taken: on to the next pixel?
-        if ((sample += k) < spp) return;
+    // at_once: the keys of the packet's pixels (of a pixel of many packets: set
+    // at its first; zeroed here, as GCC cannot tell they are set before use).
+    Keys keys{};
+    auto taken = [&]() FH_HOT_LAMBDA {  // one more sample of the pixel taken: on to the next pixel?
+        if (++sample < spp) return;
         sample = 0;
         if (++pixel < count) offsets = PixelSamples(pixels[pixel].x, pixels[pixel].y, grid);
     };
@@ -202,7 +204,7 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
                 if (i < n) {
                     const SampleCell c = offsets.next_cell();
                     x[i] = pixels[pixel].x, y[i] = pixels[pixel].y, cx[i] = c.x, cy[i] = c.y, seed[i] = c.seed;
-                    taken(1);
+                    taken();
                 } else {
                     x[i] = x[i - 1], y[i] = y[i - 1], cx[i] = cx[i - 1], cy[i] = cy[i - 1], seed[i] = seed[i - 1];
                 }
