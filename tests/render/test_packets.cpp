@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "yaml/scene_loader.h"
 #include "render/levels.h"
@@ -17,13 +18,16 @@ namespace {
 
 // The pixel bytes render_frame should give, from rays traced one by one:
 // each sample clamped (NaN: black), the mean of a pixel's samples rounded.
+// The scenes have no instances: only the shader variants without them are
+// compiled here (with_shader's instanced ones doubled this file's build).
 template <typename T>
 Image one_ray_at_a_time(const Scene& scene, const Camera& camera, int spp) {
     const auto flat = FlatScene<T>::build(scene, plan_effects(scene, Effects{}, 5));
+    if (flat.instances) throw std::logic_error("one_ray_at_a_time: a scene with instances");
     const CameraRays<T> rays(camera);
     const StrataGrid grid = strata_for(spp);
     Image image(camera.width, camera.height);
-    with_shader(flat, [&](const auto& shader) {
+    with_shader_of<T, false>(flat, [&](const auto& shader) {
         RayCounts counts;
         for (int y = 0; y < camera.height; ++y)
             for (int x = 0; x < camera.width; ++x) {
@@ -37,7 +41,7 @@ Image one_ray_at_a_time(const Scene& scene, const Camera& camera, int spp) {
                 for (int k = 0; k < 3; ++k)
                     image.pixel(x, y)[k] = std::uint8_t(std::floor(sum[k] / spp + 0.5));
             }
-    });
+    }, {});
     return image;
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "render/background.h"
 #include "yaml/scene_loader.h"
@@ -46,10 +47,13 @@ Effects only(bool ambient, bool diffuse, bool specular) {
 }
 
 // The colour of one ray, through the shader variant the effect plan picks.
+// These scenes have no instances: only the variants without them are
+// compiled here (with_shader's instanced ones doubled this file's build).
 Color<double> trace(const Scene& s, const Effects& fx, int depth, const Ray<double>& ray,
                     RayCounts& counts) {
     const auto flat = FlatScene<double>::build(s, plan_effects(s, fx, depth));
-    return with_shader(flat, [&](const auto& shader) { return shader.trace(ray, counts); });
+    if (flat.instances) throw std::logic_error("test_shading: a scene with instances");
+    return with_shader_of<double, false>(flat, [&](const auto& shader) { return shader.trace(ray, counts); }, {});
 }
 
 Color<double> shade_from_above(const Scene& s, const Effects& fx, RayCounts* counts = nullptr) {
