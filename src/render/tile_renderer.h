@@ -75,6 +75,54 @@ FH_HOT_INLINE ColorLanes<T> clamp_samples(const ColorLanes<T>& c, const LaneInts
     return {clamp(c.x), clamp(c.y), clamp(c.z)};
 }
 
+// Where a packet holds W / G whole pixels of G samples each (G < W): each
+// pixel's sum, its samples added in lane order from the first as the
+// pixel-by-pixel loop adds them (the same bytes), for every pixel at once.
+template <int G, size_t K, size_t... J>  // sample K of each pixel; J: 0 .. W / G - 1
+FH_HOT_INLINE auto pixels_sample(const auto& samples, std::index_sequence<J...>) {
+    return __builtin_shufflevector(samples, samples, (J * G + K)...);
+}
+template <int G, size_t... K>  // K: 0 .. G - 1
+FH_HOT_INLINE auto pixel_sums(const auto& samples, std::index_sequence<K...>) {
+    constexpr auto pixels = std::make_index_sequence<sizeof(samples) / sizeof(samples[0]) / G>{};
+    auto sum = pixels_sample<G, 0>(samples, pixels);
+    ((K > 0 ? (sum += pixels_sample<G, K>(samples, pixels), 0) : 0), ...);
+    return sum;
+}
+
+// Those pixels' bytes, written to the image: to_byte of each mean.
+template <typename T, int G>
+FH_HOT_INLINE void write_pixel_means(const ColorLanes<T>& c, const PixelRef* pixels, Image& image) {
+    using W = WideLanes<T>;
+    constexpr int kPixels = kLanes<T> / G;
+    typedef std::int32_t Bytes __attribute__((vector_size(kPixels * sizeof(std::int32_t))));
+    alignas(64) std::int32_t bytes[3][kPixels];
+    const Lanes<T>* channels[3] = {&c.x, &c.y, &c.z};
+    for (int k = 0; k < 3; ++k) {
+        const auto sum = pixel_sums<G>(__builtin_convertvector(*channels[k], typename W::Doubles),
+                                       std::make_index_sequence<G>{});
+        const Bytes b = __builtin_convertvector(sum / double(G) + 0.5, Bytes);
+        std::memcpy(bytes[k], &b, sizeof b);
+    }
+    for (int j = 0; j < kPixels; ++j) {
+        std::uint8_t* px = image.pixel(pixels[j].x, pixels[j].y);
+        for (int k = 0; k < 3; ++k) px[k] = std::uint8_t(bytes[k][j]);
+    }
+}
+// The same for spp samples a pixel, where a packet holds whole pixels of 2,
+// 4 or 8 samples; false (nothing written) for any other count.
+template <typename T>
+FH_HOT_INLINE bool write_whole_pixels(int spp, const ColorLanes<T>& c, const PixelRef* pixels, Image& image) {
+    constexpr int W = kLanes<T>;
+    if constexpr (W > 2)
+        if (spp == 2) return write_pixel_means<T, 2>(c, pixels, image), true;
+    if constexpr (W > 4)
+        if (spp == 4) return write_pixel_means<T, 4>(c, pixels, image), true;
+    if constexpr (W > 8)
+        if (spp == 8) return write_pixel_means<T, 8>(c, pixels, image), true;
+    return false;
+}
+
 // One sample through each pixel's centre, for the pixels [x0, x1) x [y0, y1)
 // of one tile (at most kTileSize square):
 // a packet is a block of neighbouring pixels -- 4 wide and W / 4 high (4 x 2
@@ -240,6 +288,11 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
         const LaneInts<T> active = first_lanes<T>(n);
         counts.primary += std::uint64_t(n);
         const ColorLanes<T> c = clamp_samples(shader.trace(rays, active, counts, visible), active, counts);
+        if (n == W && write_whole_pixels<T>(spp, c, pixels + done, image)) {  // (summed is 0)
+            done += W / spp;
+            rays = next;
+            continue;
+        }
         alignas(64) T rgb[3][W];
         store(rgb[0], c.x);
         store(rgb[1], c.y);
