@@ -18,8 +18,9 @@ for ((level = 2; level < ${widest:-2}; level++)); do
   FIRSTHIT_ISA=v$level ctest --output-on-failure -j "$(nproc)" -E '^(slurm|view)\.' | tail -n 3
 done
 # ThreadSanitizer over the tests that start threads and the tracer's tests
-# at the AVX2 width (build-tsan); every test once more under AddressSanitizer and UndefinedBehaviorSanitizer, then
-# the loaders' fuzzers for 15 s each (one clang build for both: build-asan).
+# at the AVX2 width (build-tsan); every test once more under
+# AddressSanitizer and UndefinedBehaviorSanitizer, then the loaders' fuzzers
+# for 15 s each (one clang build for both: build-asan).
 bash "$here/scripts/test_tsan.sh"
 bash "$here/scripts/test_sanitizers.sh"
 bash "$here/scripts/fuzz.sh" 15
