@@ -11,11 +11,14 @@ cmake --build . --target firsthit_bench -j "$(nproc)" >/dev/null
 ctest --output-on-failure -j "$(nproc)"
 # The same tests again through each lower x86-64 level this CPU runs, forced
 # (FIRSTHIT_ISA, src/render/levels.h): the one binary's copies of the tracer
-# for v2 and v3 (the Slurm and window tests, which render nothing new, once).
+# for v2 and v3. Once only: the Slurm and window tests, which render nothing
+# new, and the encoders' (video/, scripts/encode.sh, make movies), which
+# no level changes -- the frames they encode are the other tests' to check.
 widest=$(./firsthit --version | sed -n 's/.*tracing at x86-64-v\([0-9]\).*/\1/p')
 for ((level = 2; level < ${widest:-2}; level++)); do
   echo "test: every test again at x86-64-v$level (FIRSTHIT_ISA=v$level)"
-  FIRSTHIT_ISA=v$level ctest --output-on-failure -j "$(nproc)" -E '^(slurm|view)\.' | tail -n 3
+  FIRSTHIT_ISA=v$level ctest --output-on-failure -j "$(nproc)" \
+    -E '^(slurm|view|EncodeCli|EncodeScript|MakeMovies|Yuv420)\.' | tail -n 3
 done
 # ThreadSanitizer over the tests that start threads and the tracer's tests
 # at the AVX2 width (build-tsan); every test once more under
