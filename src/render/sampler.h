@@ -91,6 +91,20 @@ public:
         v = (v * m2 + b) & mask;
     }
 
+    // operator() of every lane of a vector at once, each lane its own key's
+    // parts: the lanes still past count step again, until none is.
+    template <typename V, typename K>
+    static void walk(V& v, const K& a, const K& m1, const K& m2, const K& b, unsigned count) {
+        const unsigned bits = count <= 1 ? 0 : 32 - unsigned(__builtin_clz(count - 1));
+        step(v, a, m1, m2, b, bits);
+        if ((count & (count - 1)) == 0) return;  // 2^bits: in range at once
+        for (V past = V(v >= count); !lanes_none(past); past = V(v >= count)) {
+            V again = v;
+            step(again, a, m1, m2, b, bits);
+            v = (again & past) | (v & ~past);
+        }
+    }
+
     // The four parts of a 64-bit key, its low 32 bits and three shifts of
     // it: of one key, or lane by lane of a vector of them.
     template <typename U, typename S>
@@ -103,6 +117,12 @@ public:
     }
 
 private:
+    template <typename V>
+    static bool lanes_none(const V& m) {
+        V zero{};
+        return __builtin_memcmp(&m, &zero, sizeof m) == 0;
+    }
+
     unsigned count_, a_ = 0, m1_ = 0, m2_ = 0, b_ = 0;
     unsigned bits_ = 0;
 };
@@ -157,9 +177,9 @@ public:
     }
 
     // The samples' cells in order, 0, 1, 2, ... as operator[] takes them
-    // (for n > 1), for the renderer's loop, which jitters a packet's lanes
-    // at once: the stratum counted along instead of divided out, and a row
-    // of strata's sub-column worked out once a row.
+    // (for n > 1), one at a time: the stratum counted along instead of
+    // divided out, and a row of strata's sub-column worked out once a row.
+    // What cells_at_once, which the renderer runs, is tested against.
     SampleCell next_cell() {
         const SampleCell c = cell(sample_++, sx_, sy_, column_);
         if (++sx_ == grid_.nx) {
@@ -193,10 +213,15 @@ private:
     int sample_ = 0, sx_ = 0, sy_ = 0, column_;  // next_cell()'s place
 };
 
-// Whether cells_at_once applies: nx and ny powers of two (2, 4, 8, 16, 64,
-// 256 samples ...), so that each permutation is one step.
-inline bool cells_at_once_apply(StrataGrid g) {
-    return (g.nx & (g.nx - 1)) == 0 && (g.ny & (g.ny - 1)) == 0;
+// s / d and s % d of every lane (d > 0, s d < 2^32: samples below 4096)
+// by one multiply, as compilers divide by a constant: floor(s m / 2^32)
+// with m = ceil(2^32 / d) is floor(s / d) while s d < 2^32.
+template <typename U>
+FH_HOT_INLINE void divide_lanes(const U& s, unsigned d, U& quotient, U& remainder) {
+    typedef std::uint64_t Wide __attribute__((vector_size(2 * sizeof(U))));
+    const std::uint64_t m = ((std::uint64_t(1) << 32) + d - 1) / d;
+    quotient = __builtin_convertvector((__builtin_convertvector(s, Wide) * m) >> 32, U);
+    remainder = s - quotient * d;
 }
 
 // Many pixels' keys at once, a pixel a lane (PixelSamples' key_ and the
@@ -239,17 +264,21 @@ private:
 
 // Many samples' cells at once, a sample a lane: lane i is sample s[i] of
 // the pixel of keys' lane i, its cell (x[i], y[i]) and seed as
-// PixelSamples' next_cell gives them (cells_at_once_apply(grid) only).
+// PixelSamples' next_cell gives them. Where nx and ny are powers of two
+// (2, 4, 8, 16, 64, 256 ... samples) the strata are shifts and masks and
+// each permutation one step; otherwise a multiply and a walk.
 template <typename U, typename S>
 FH_HOT_INLINE void cells_at_once(StrataGrid grid, const PixelKeys<U, S>& keys, const U& s, U& x, U& y, S& seed) {
-    const int log_nx = __builtin_ctz(unsigned(grid.nx)), log_ny = __builtin_ctz(unsigned(grid.ny));
-    U sx = s & unsigned(grid.nx - 1), sy = s >> log_nx;
+    const unsigned nx = unsigned(grid.nx), ny = unsigned(grid.ny);
+    U sx, sy;
+    if ((nx & (nx - 1)) == 0) sx = s & (nx - 1), sy = s >> __builtin_ctz(nx);
+    else divide_lanes(s, nx, sy, sx);
     sample_seed(keys.key, __builtin_convertvector(s, S), seed);
-    x = sx * unsigned(grid.ny);
-    y = sy * unsigned(grid.nx);
+    x = sx * ny;
+    y = sy * nx;
     // Now each lane's sub-column, and sub-row.
-    Permutation::step(sy, keys.column[0], keys.column[1], keys.column[2], keys.column[3], unsigned(log_ny));
-    Permutation::step(sx, keys.row[0], keys.row[1], keys.row[2], keys.row[3], unsigned(log_nx));
+    Permutation::walk(sy, keys.column[0], keys.column[1], keys.column[2], keys.column[3], ny);
+    Permutation::walk(sx, keys.row[0], keys.row[1], keys.row[2], keys.row[3], nx);
     x += sy;
     y += sx;
 }

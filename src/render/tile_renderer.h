@@ -190,79 +190,59 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
     const StrataGrid grid = strata_for(spp);
     const int samples = count * spp;
     int pixel = 0, sample = 0;  // the next sample to take
-    PixelSamples offsets(pixels[0].x, pixels[0].y, grid);  // the pixel's
-    // The camera rays of the next n samples (past the last sample, the lanes
-    // repeat one of the packet's, inactive): every lane's cell at once where
-    // a packet holds whole pixels or one pixel's samples and the strata come
-    // in powers of two (2, 4, 8, 16, 64, 256 ... samples), else each lane's
-    // in turn; then every lane's jitter at once (PixelSamples' `jittered`,
-    // lane by lane).
+    // The camera rays of the next packet's samples, every lane's cell at
+    // once (past the last sample, the lanes repeat a pixel of the list,
+    // inactive); then every lane's jitter at once (PixelSamples'
+    // `jittered`, lane by lane).
     using Doubles = typename WideLanes<T>::Doubles;
     using Ints = typename WideLanes<T>::Ints;
     using Seeds = typename WideLanes<T>::Seeds;
     using Uints = typename WideLanes<T>::Uints;
     // (A vector made once: from a scalar, GCC built it in memory at every
     // packet and waited on the load.)
-    const Doubles unit = Doubles{} + offsets.unit();
-    const bool at_once = (spp % W == 0 || W % spp == 0) && cells_at_once_apply(grid);
-    const int log_spp = __builtin_ctz(unsigned(spp));
+    const Doubles unit = Doubles{} + 1.0 / double(spp);
+    const int log_spp = (spp & (spp - 1)) == 0 ? __builtin_ctz(unsigned(spp)) : -1;
     Uints lane;
     for (int i = 0; i < W; ++i) lane[i] = unsigned(i);
     using Keys = PixelKeys<Uints, Seeds>;
-    // at_once: the keys of the packet's pixels (of a pixel of many packets: set
-    // at its first; zeroed here, as GCC cannot tell they are set before use).
+    // The keys of the packet's pixels (of a pixel of many packets: set at
+    // its first; zeroed here, as GCC cannot tell they are set before use).
     Keys keys{};
-    auto taken = [&]() FH_HOT_LAMBDA {  // one more sample of the pixel taken: on to the next pixel?
-        if (++sample < spp) return;
-        sample = 0;
-        if (++pixel < count) offsets = PixelSamples(pixels[pixel].x, pixels[pixel].y, grid);
-    };
-    auto take = [&](int n) FH_HOT_LAMBDA {
+    auto take = [&]() FH_HOT_LAMBDA {
         Doubles px, py, lx, ly;
         Seeds hx;
-        if (at_once) {
-            // Lane i: sample (sample + i) mod spp of the pixel (sample + i)
-            // / spp pixels on (the last pixel again past the list's end).
-            Uints ux, uy, us, cx, cy;
-            if (spp >= W) {  // one pixel's; its keys at its first packet
-                ux = Uints{} + pixels[pixel].x, uy = Uints{} + pixels[pixel].y, us = unsigned(sample) + lane;
-                if (sample == 0) keys = Keys(unsigned(pixels[pixel].x), unsigned(pixels[pixel].y));
-            } else {
-                alignas(64) std::uint32_t x[W], y[W];
+        Uints ux, uy, us, cx, cy;
+        if (spp % W == 0) {  // one pixel's samples; its keys at its first packet
+            ux = Uints{} + pixels[pixel].x, uy = Uints{} + pixels[pixel].y, us = unsigned(sample) + lane;
+            if (sample == 0) keys = Keys(unsigned(pixels[pixel].x), unsigned(pixels[pixel].y));
+            if ((sample += W) == spp) sample = 0, ++pixel;
+        } else {  // lane i: the sample after lane i - 1's, of its pixel or the next
+            alignas(64) std::uint32_t x[W], y[W], in_pixel[W];
+            if (log_spp >= 0) {  // 2^log_spp samples: W / spp whole pixels, by shifts
                 for (int i = 0; i < W; ++i) {
                     const PixelRef& p = pixels[std::min(pixel + ((sample + i) >> log_spp), count - 1)];
                     x[i] = p.x, y[i] = p.y;
                 }
-                std::memcpy(&ux, x, sizeof ux);
-                std::memcpy(&uy, y, sizeof uy);
                 us = (unsigned(sample) + lane) & unsigned(spp - 1);
-                keys = Keys(ux, uy);
-            }
-            pixel += (sample + W) >> log_spp;
-            sample = (sample + W) & (spp - 1);
-            cells_at_once(grid, keys, us, cx, cy, hx);
-            px = __builtin_convertvector(__builtin_convertvector(ux, Ints), Doubles);
-            py = __builtin_convertvector(__builtin_convertvector(uy, Ints), Doubles);
-            lx = __builtin_convertvector(__builtin_convertvector(cx, Ints), Doubles);
-            ly = __builtin_convertvector(__builtin_convertvector(cy, Ints), Doubles);
-        } else {
-            alignas(64) double x[W], y[W], cx[W], cy[W];
-            alignas(64) std::uint64_t seed[W];
-            for (int i = 0; i < W; ++i) {
-                if (i < n) {
-                    const SampleCell c = offsets.next_cell();
-                    x[i] = pixels[pixel].x, y[i] = pixels[pixel].y, cx[i] = c.x, cy[i] = c.y, seed[i] = c.seed;
-                    taken();
-                } else {
-                    x[i] = x[i - 1], y[i] = y[i - 1], cx[i] = cx[i - 1], cy[i] = cy[i - 1], seed[i] = seed[i - 1];
+                pixel += (sample + W) >> log_spp;
+                sample = (sample + W) & (spp - 1);
+            } else {
+                for (int i = 0; i < W; ++i) {
+                    const PixelRef& p = pixels[std::min(pixel, count - 1)];
+                    x[i] = p.x, y[i] = p.y, in_pixel[i] = unsigned(sample);
+                    if (++sample == spp) sample = 0, ++pixel;
                 }
+                std::memcpy(&us, in_pixel, sizeof us);
             }
-            std::memcpy(&px, x, sizeof px);
-            std::memcpy(&py, y, sizeof py);
-            std::memcpy(&lx, cx, sizeof lx);
-            std::memcpy(&ly, cy, sizeof ly);
-            std::memcpy(&hx, seed, sizeof hx);
+            std::memcpy(&ux, x, sizeof ux);
+            std::memcpy(&uy, y, sizeof uy);
+            keys = Keys(ux, uy);
         }
+        cells_at_once(grid, keys, us, cx, cy, hx);
+        px = __builtin_convertvector(__builtin_convertvector(ux, Ints), Doubles);
+        py = __builtin_convertvector(__builtin_convertvector(uy, Ints), Doubles);
+        lx = __builtin_convertvector(__builtin_convertvector(cx, Ints), Doubles);
+        ly = __builtin_convertvector(__builtin_convertvector(cy, Ints), Doubles);
         if (spp == 1) {  // the pixel's centre
             px += 0.5, py += 0.5;
         } else {
@@ -279,12 +259,12 @@ void render_pixels(const S& shader, const CameraRays<T>& camera, const PixelRef*
     // Each pixel's sum, sample by sample in their order, then its byte.
     double sum[3] = {0, 0, 0};
     int summed = 0, done = 0;  // samples in sum; pixels written
-    RayPacket<T> rays = take(std::min(W, samples));
+    RayPacket<T> rays = take();
     for (int first = 0; first < samples; first += W) {
         const int n = std::min(W, samples - first);
         // The next packet's rays before this one is traced: their square
         // root and division run beside the trace (as in render_centres).
-        const RayPacket<T> next = first + W < samples ? take(std::min(W, samples - first - W)) : rays;
+        const RayPacket<T> next = first + W < samples ? take() : rays;
         const LaneInts<T> active = first_lanes<T>(n);
         counts.primary += std::uint64_t(n);
         const ColorLanes<T> c = clamp_samples(shader.trace(rays, active, counts, visible), active, counts);

@@ -72,11 +72,12 @@ Camera small(Camera c) {
 
 TEST(Packets, RenderFrameIsEachPixelsRaysTracedOneAtATime) {
     const Scene scene = load_scene(FIRSTHIT_SOURCE_DIR "/animations/scene.yaml").scene;
-    // 3 samples: cells one lane at a time; 2, 4 and 8: several whole pixels
-    // a packet, each lane's cell at once (but 8 in double, 8 lanes: one
-    // pixel a packet); 16: one pixel's samples a packet, or two, at once.
+    // 2, 4 and 8 samples: several whole pixels a packet (but 8 in double, 8
+    // lanes: one pixel a packet); 16: one pixel's samples a packet, or two;
+    // 3, 6 and 24: packets that end inside a pixel, strata of 3 x 1, 3 x 2
+    // and 6 x 4. Every lane's cell at once in each.
     for (const Camera& camera : scene.cameras)
-        for (const int spp : {1, 2, 3, 4, 8, 16}) {
+        for (const int spp : {1, 2, 3, 4, 6, 8, 16, 24}) {
             expect_same_as_one_ray_at_a_time<double>(scene, small(camera), spp);
             expect_same_as_one_ray_at_a_time<float>(scene, small(camera), spp);
         }

@@ -82,28 +82,30 @@ TEST(Sampler, CellsInOrderGiveTheSamplesOneByOne) {
 }
 
 TEST(Sampler, CellsAtOnceAreTheCellsInOrder) {
-    // Where the strata come in powers of two, the renderer takes a packet's
-    // cells lane by lane at once, each lane any sample of any pixel: the
-    // same cells and seeds as next_cell. Here 8 lanes, each a different
-    // pixel's sample, in a shuffled order.
+    // The renderer takes a packet's cells at once, each lane any sample of
+    // any pixel: the same cells and seeds as next_cell, for any count --
+    // powers of two by shifts, others by a multiply and the permutations'
+    // walks. Here 8 lanes, each a different pixel's sample, in a shuffled
+    // order.
     typedef unsigned Cells __attribute__((vector_size(8 * sizeof(unsigned))));
     typedef std::uint64_t Seeds __attribute__((vector_size(8 * sizeof(std::uint64_t))));
-    for (int n : {1, 2, 4, 8, 16, 32, 64, 256}) {
+    for (int n : {1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 24, 32, 48, 64, 97, 100, 256, 4093, 4096}) {
         const StrataGrid g = strata_for(n);
-        ASSERT_TRUE(cells_at_once_apply(g)) << n;
         for (int p = 0; p < 20; ++p) {
+            Cells px, py;
+            std::vector<SampleCell> in_order[8];  // each lane's pixel's cells, in order
+            for (int i = 0; i < 8; ++i) {
+                px[i] = unsigned(13 * p + 5 * i), py[i] = unsigned(799 - p - i);
+                PixelSamples samples(int(px[i]), int(py[i]), g);
+                for (int k = 0; k < n; ++k) in_order[i].push_back(samples.next_cell());
+            }
             for (int first = 0; first < n; first += 8) {
-                Cells px, py, s, x, y;
+                Cells s, x, y;
                 Seeds seed;
-                for (int i = 0; i < 8; ++i) {
-                    px[i] = unsigned(13 * p + 5 * i), py[i] = unsigned(799 - p - i);
-                    s[i] = unsigned((first + 3 * i) % n);
-                }
+                for (int i = 0; i < 8; ++i) s[i] = unsigned((first + 3 * i) % n);
                 cells_at_once(g, PixelKeys<Cells, Seeds>(px, py), s, x, y, seed);
                 for (int i = 0; i < 8; ++i) {
-                    PixelSamples in_order(int(px[i]), int(py[i]), g);
-                    SampleCell c{};
-                    for (unsigned k = 0; k <= s[i]; ++k) c = in_order.next_cell();
+                    const SampleCell& c = in_order[i][s[i]];
                     ASSERT_EQ(int(x[i]), c.x) << n << " samples, sample " << s[i];
                     ASSERT_EQ(int(y[i]), c.y) << n << " samples, sample " << s[i];
                     ASSERT_EQ(seed[i], c.seed) << n << " samples, sample " << s[i];
@@ -111,7 +113,6 @@ TEST(Sampler, CellsAtOnceAreTheCellsInOrder) {
             }
         }
     }
-    for (int n : {3, 6, 7, 12, 97}) EXPECT_FALSE(cells_at_once_apply(strata_for(n))) << n;
     // One pixel's keys in every lane, worked out once: the same keys.
     for (unsigned p = 0; p < 20; ++p) {
         const PixelKeys<Cells, Seeds> one(7 * p, 3 * p + 1), lanes(Cells{} + 7 * p, Cells{} + (3 * p + 1));
