@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "core/simd.h"  // any
 #include "core/vec.h"  // FH_HOT_INLINE
 
 namespace fh {
@@ -60,9 +61,8 @@ inline double unit_from_bits(std::uint64_t bits) { return double(bits >> 40) * 0
 // falls in [0, count), which the cycle through any i there reaches.
 class Permutation {
 public:
-    Permutation(int count, std::uint64_t key) : count_(unsigned(count)) {
+    Permutation(int count, std::uint64_t key) : count_(unsigned(count)), bits_(bits_for(count_)) {
         key_parts(key, a_, m1_, m2_, b_);
-        while ((1u << bits_) < count_) ++bits_;
     }
 
     int operator()(int i) const {
@@ -95,10 +95,10 @@ public:
     // parts: the lanes still past count step again, until none is.
     template <typename V, typename K>
     static void walk(V& v, const K& a, const K& m1, const K& m2, const K& b, unsigned count) {
-        const unsigned bits = count <= 1 ? 0 : 32 - unsigned(__builtin_clz(count - 1));
+        const unsigned bits = bits_for(count);
         step(v, a, m1, m2, b, bits);
         if ((count & (count - 1)) == 0) return;  // 2^bits: in range at once
-        for (V past = V(v >= count); !lanes_none(past); past = V(v >= count)) {
+        for (V past = V(v >= count); any(past); past = V(v >= count)) {
             V again = v;
             step(again, a, m1, m2, b, bits);
             v = (again & past) | (v & ~past);
@@ -117,14 +117,12 @@ public:
     }
 
 private:
-    template <typename V>
-    static bool lanes_none(const V& m) {
-        V zero{};
-        return __builtin_memcmp(&m, &zero, sizeof m) == 0;
+    // The bits of the numbers the bijection permutes: the fewest that count.
+    static unsigned bits_for(unsigned count) {
+        return count <= 1 ? 0 : 32 - unsigned(__builtin_clz(count - 1));
     }
 
-    unsigned count_, a_ = 0, m1_ = 0, m2_ = 0, b_ = 0;
-    unsigned bits_ = 0;
+    unsigned count_, bits_, a_ = 0, m1_ = 0, m2_ = 0, b_ = 0;
 };
 
 struct SampleOffset {

@@ -82,11 +82,11 @@ template <int G, size_t K, size_t... J>  // sample K of each pixel; J: 0 .. W / 
 FH_HOT_INLINE auto pixels_sample(const auto& samples, std::index_sequence<J...>) {
     return __builtin_shufflevector(samples, samples, (J * G + K)...);
 }
-template <int G, size_t... K>  // K: 0 .. G - 1
+template <int G, size_t... K>  // K: 0 .. G - 2
 FH_HOT_INLINE auto pixel_sums(const auto& samples, std::index_sequence<K...>) {
     constexpr auto pixels = std::make_index_sequence<sizeof(samples) / sizeof(samples[0]) / G>{};
     auto sum = pixels_sample<G, 0>(samples, pixels);
-    ((K > 0 ? (sum += pixels_sample<G, K>(samples, pixels), 0) : 0), ...);
+    ((sum += pixels_sample<G, K + 1>(samples, pixels)), ...);
     return sum;
 }
 
@@ -100,7 +100,7 @@ FH_HOT_INLINE void write_pixel_means(const ColorLanes<T>& c, const PixelRef* pix
     const Lanes<T>* channels[3] = {&c.x, &c.y, &c.z};
     for (int k = 0; k < 3; ++k) {
         const auto sum = pixel_sums<G>(__builtin_convertvector(*channels[k], typename W::Doubles),
-                                       std::make_index_sequence<G>{});
+                                       std::make_index_sequence<G - 1>{});
         const Bytes b = __builtin_convertvector(sum / double(G) + 0.5, Bytes);
         std::memcpy(bytes[k], &b, sizeof b);
     }
