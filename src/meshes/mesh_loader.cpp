@@ -37,8 +37,14 @@
 //   - its OBJ importer writes past its vertex array for a line statement of
 //     one vertex (heap corruption; fixed in 5.3.0): such statements are
 //     refused first (src/meshes/obj_lines.h).
+//   - an OBJ file's `mtllib` makes it open any path the file names (an
+//     absolute one, a folder, /dev/..., the other mesh files beside it) and
+//     parse it as a material library, a second parser on bytes nobody meant
+//     for it: assimp opens only the mesh file itself (OnlyThisFile). The
+//     materials come from the scene; a mesh never reads other files.
 #include "meshes/mesh_loader.h"
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
@@ -56,6 +62,7 @@
 #include <new>
 #include <sstream>
 #include <unordered_map>
+#include <utility>
 
 #include <glm/common.hpp>
 
@@ -78,6 +85,21 @@ using mesh_text::plural;
 using mesh_text::starts_with;
 
 using Format = MeshFormat;
+
+// assimp's file access, limited to the one file being loaded.
+class OnlyThisFile final : public Assimp::DefaultIOSystem {
+public:
+    explicit OnlyThisFile(std::string path) : path_(std::move(path)) {}
+    using DefaultIOSystem::Exists;
+    using DefaultIOSystem::Open;
+    bool Exists(const char* file) const override { return path_ == file && DefaultIOSystem::Exists(file); }
+    Assimp::IOStream* Open(const char* file, const char* mode) override {
+        return path_ == file ? DefaultIOSystem::Open(file, mode) : nullptr;
+    }
+
+private:
+    std::string path_;
+};
 
 
 
@@ -387,6 +409,7 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
     try {
         AssimpMessages log;
         Assimp::Importer importer;
+        importer.SetIOHandler(new OnlyThisFile(path));  // the importer owns it
         // Read and validated only, so coordinates are checked before
         // JoinIdenticalVertices can merge a NaN away. STL is not validated:
         // assimp makes its faces itself (always whole), and the validator

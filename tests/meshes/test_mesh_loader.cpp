@@ -297,6 +297,17 @@ TEST(MeshLoader, ObjectsAndMaterialsMakeOneMeshWithSharedVertices) {
     expect_cube(load_mesh(write_temp_file("two_objects.obj", s)));
 }
 
+TEST(MeshLoader, ObjMaterialLibrariesAreNotOpened) {
+    // An OBJ's `mtllib` names any path; assimp used to open it and parse it
+    // as a material library. Naming the folder itself failed the load with
+    // "file read error"; an absolute path read that file. Neither is opened
+    // now: the materials come from the scene.
+    for (const std::string library : {".", "/proc/self/status", "missing.mtl"}) {
+        SCOPED_TRACE(library);
+        expect_cube(load_mesh(write_temp_file("mtllib.obj", "mtllib " + library + "\n" + cube_obj())));
+    }
+}
+
 TEST(MeshLoader, PointsAndLinesAreLeftOut) {
     expect_cube(load_mesh(write_temp_file("with_lines.obj", cube_obj() + "l 1 2 3\np 4\n")));
 }
