@@ -31,6 +31,10 @@
 //     file cut short, whose end it reads as the 0x0a bytes its buffer was
 //     filled with): the data is walked first as assimp will read it, and a
 //     list longer than what follows it is refused (src/meshes/ply_lists.h).
+//   - a second PLY vertex element (or face element) writes past the arrays the
+//     first sized (heap corruption), and a face element of texture
+//     coordinates without vertex indices is read through a null pointer:
+//     refused by the same walk.
 //   - a binary PLY header that ends on the last byte of its 1 MiB line buffer
 //     leaves its binary reader an empty block, read through a null pointer (a
 //     crash): refused by the same walk.

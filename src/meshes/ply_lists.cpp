@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "meshes/assimp_replay.h"
@@ -36,10 +38,12 @@ Type parse_data_type(Buffer& b) {
 struct Property {
     bool list = false;
     Type length = Type::invalid, value = Type::invalid;
+    const char* name = "";  // the name, where assimp knows it
 };
 
 struct Element {
     bool parsed_in_ascii = false;  // a semantic assimp knows (vertex, face, ...): its lines are parsed
+    const char* name = "";         // the name, where assimp knows it
     std::uint32_t count = 0;
     std::vector<Property> properties;
 
@@ -64,10 +68,9 @@ bool parse_property(Buffer& b, Property& p) {
                            "specular_green", "specular_blue", "specular_alpha", "opacity", "specular_power", "r",
                            "g", "b", "u", "s", "tx", "texture_u", "v", "t", "ty", "texture_v", "x", "y", "z",
                            "nx", "ny", "nz"};
-    bool semantic = false;
     for (const char* name : known)
-        if (!semantic && token_match(b, name)) semantic = true;
-    if (!semantic) skip_line(b);
+        if (!*p.name && token_match(b, name)) p.name = name;
+    if (!*p.name) skip_line(b);
     skip_spaces_and_line_end(b);
     return true;
 }
@@ -78,7 +81,7 @@ bool parse_element(StreamBuffer& stream, Buffer& b, Element& e) {
     if (!skip_spaces(b)) return false;
     bool known = false, texture_file = false;
     for (const char* name : {"vertex", "face", "tristrips", "edge", "material"})
-        if (!known && token_match(b, name)) known = true;
+        if (!known && token_match(b, name)) known = true, e.name = name;
     if (!known && token_match(b, "TextureFile")) texture_file = true;
     if (!known)  // assimp keeps the name up to the buffer's zero (strlen)
         for (std::size_t i = 0; b.at(i) != '\0';) ++i;
@@ -107,6 +110,35 @@ void check_count(const Element& e, std::uint64_t file_size, const std::string& p
         throw InputError(path, "assimp 5.2.5 would read " + std::to_string(e.count) +
                                    " instances of a PLY element from a file of " + std::to_string(file_size) +
                                    " bytes");
+}
+
+// The elements PLYImporter fills its mesh from, as it does (LoadVertex,
+// LoadFace): the first vertex element sizes the vertex arrays and every
+// vertex element writes into them, each from its own index 0 -- a second,
+// longer one writes past their end (heap corruption: a 300-byte file aborts
+// the process in glibc's malloc) -- and so the first face or tristrips
+// element the face array. A face element's texture coordinates are read
+// through its vertex indices, a null pointer when it has none (a crash).
+// Refused, all three; the assimp-testmodels PLY files have none of them.
+void check_elements(const std::vector<Element>& elements, const std::string& path) {
+    using Names = std::initializer_list<std::string_view>;
+    auto one_of = [](const char* name, Names names) { return std::find(names.begin(), names.end(), name) != names.end(); };
+    auto elements_named = [&](Names names) {
+        return std::count_if(elements.begin(), elements.end(), [&](const Element& e) { return one_of(e.name, names); });
+    };
+    const std::string why = " (assimp 5.2.5 would write past the end of its arrays)";
+    if (elements_named({"vertex"}) > 1) throw InputError(path, "a PLY header with two 'vertex' elements" + why);
+    if (elements_named({"face", "tristrips"}) > 1)
+        throw InputError(path, "a PLY header with two elements of faces ('face' or 'tristrips')" + why);
+    for (const Element& e : elements) {
+        auto has_list = [&](Names names) {
+            return std::any_of(e.properties.begin(), e.properties.end(),
+                               [&](const Property& p) { return p.list && one_of(p.name, names); });
+        };
+        if (one_of(e.name, {"face"}) && has_list({"texcoord"}) && !has_list({"vertex_index", "vertex_indices"}))
+            throw InputError(path, "a PLY 'face' element with texture coordinates but no vertex indices (assimp "
+                                   "5.2.5 would read them through a null pointer)");
+    }
 }
 
 // One ASCII line of an element assimp parses (ElementInstance::ParseInstance):
@@ -270,6 +302,7 @@ void check_ply_lists(const std::string& path) {
             else if (token_match(b, "end_header")) break;
             else if (!stream.get_next_line(b)) throw PastTheBuffer{};  // assimp would loop here for ever
         }
+        check_elements(elements, path);
         if (ascii) {
             skip_spaces_and_line_end(b);
             check_ascii(stream, b, elements, path, file.size());

@@ -11,7 +11,9 @@
 // count from that name: usually 0) -- and a list longer than what follows
 // it on its line (ASCII) or in the file (binary) is refused. Where assimp
 // itself would give up on a value (it throws), the check stops: assimp
-// reads no further.
+// reads no further. The header's elements are checked too: a second vertex
+// or face element makes assimp write past its arrays, a face element of
+// texture coordinates without indices read through a null pointer.
 #pragma once
 
 #include <string>

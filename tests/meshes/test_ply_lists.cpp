@@ -125,6 +125,40 @@ TEST(PlyLists, BinaryLengthsBeyondTheFile) {
 }
 
 // A binary header of exactly `length` bytes: comment lines fill it out.
+// Headers whose elements assimp fills its arrays from past their end, or
+// reads through a null pointer: a second vertex element longer than the
+// first aborted the process in glibc's malloc (found while fuzzing the
+// mesh loader with valgrind), a face element of texture coordinates without
+// indices crashed it.
+TEST(PlyLists, ElementsAssimpWritesPastItsArrays) {
+    const std::string xyz = "property float x\nproperty float y\nproperty float z\n";
+    const std::string two_vertex_elements = "ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "element vertex 3\n" + xyz +
+                                            "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                                            "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n";
+    EXPECT_EQ(ply_error(two_vertex_elements),
+              "FILE: error: a PLY header with two 'vertex' elements (assimp 5.2.5 would write past the end of its "
+              "arrays)");
+    std::string face_and_strip = kTriangleHeader;
+    face_and_strip.insert(face_and_strip.find("end_header"), "element tristrips 1\nproperty list int int vertex_indices\n");
+    EXPECT_EQ(ply_error(face_and_strip + kPlyVertices + "3 0 1 2\n3 0 1 2\n"),
+              "FILE: error: a PLY header with two elements of faces ('face' or 'tristrips') (assimp 5.2.5 would write "
+              "past the end of its arrays)");
+    std::string texcoords_only = kTriangleHeader;
+    texcoords_only.replace(texcoords_only.find("vertex_indices"), 14, "texcoord");
+    texcoords_only.replace(texcoords_only.find("uchar int"), 9, "uchar float");
+    EXPECT_EQ(ply_error(texcoords_only + kPlyVertices + "6 0 0 1 0 0 1\n"),
+              "FILE: error: a PLY 'face' element with texture coordinates but no vertex indices (assimp 5.2.5 would "
+              "read them through a null pointer)");
+    // Texture coordinates beside the indices, and a vertex element beside
+    // others of other names, are read as they should be.
+    std::string texcoords = kTriangleHeader;
+    texcoords.insert(texcoords.find("end_header"), "property list uchar float texcoord\n");
+    EXPECT_EQ(ply_error(texcoords + kPlyVertices + "3 0 1 2 6 0 0 1 0 0 1\n"), "(no error)");
+    std::string with_edges = kTriangleHeader;
+    with_edges.insert(with_edges.find("end_header"), "element edge 0\nproperty int vertex1\n");
+    EXPECT_EQ(ply_error(with_edges + kPlyVertices + "3 0 1 2\n"), "(no error)");
+}
+
 std::string binary_header_of(std::size_t length) {
     const std::string head = "ply\nformat binary_little_endian 1.0\n";
     const std::string tail = "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
