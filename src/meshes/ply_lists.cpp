@@ -117,14 +117,16 @@ void check_count(const Element& e, std::uint64_t file_size, const std::string& p
 // vertex element writes into them, each from its own index 0 -- a second,
 // longer one writes past their end (heap corruption: a 300-byte file aborts
 // the process in glibc's malloc) -- and so the first face or tristrips
-// element the face array. A face element's texture coordinates are read
-// through its vertex indices, a null pointer when it has none (a crash).
-// Refused, all three; the assimp-testmodels PLY files have none of them.
+// element the face array. (An element of no instances writes nothing.) A
+// face element's texture coordinates are read through its vertex indices,
+// a null pointer when it has none (a crash). Refused, all three; the
+// assimp-testmodels PLY files have none of them.
 void check_elements(const std::vector<Element>& elements, const std::string& path) {
     using Names = std::initializer_list<std::string_view>;
     auto one_of = [](const char* name, Names names) { return std::find(names.begin(), names.end(), name) != names.end(); };
     auto elements_named = [&](Names names) {
-        return std::count_if(elements.begin(), elements.end(), [&](const Element& e) { return one_of(e.name, names); });
+        return std::count_if(elements.begin(), elements.end(),
+                             [&](const Element& e) { return e.count > 0 && one_of(e.name, names); });
     };
     const std::string why = " (assimp 5.2.5 would write past the end of its arrays)";
     if (elements_named({"vertex"}) > 1) throw InputError(path, "a PLY header with two 'vertex' elements" + why);

@@ -154,6 +154,10 @@ TEST(PlyLists, ElementsAssimpWritesPastItsArrays) {
     std::string texcoords = kTriangleHeader;
     texcoords.insert(texcoords.find("end_header"), "property list uchar float texcoord\n");
     EXPECT_EQ(ply_error(texcoords + kPlyVertices + "3 0 1 2 6 0 0 1 0 0 1\n"), "(no error)");
+    std::string empty_first = two_vertex_elements;
+    empty_first.replace(empty_first.find("vertex 1"), 8, "vertex 0");
+    empty_first.erase(empty_first.find("0 0 0\n"), 6);
+    EXPECT_EQ(ply_error(empty_first), "(no error)");  // an element of no vertices writes none
     std::string with_edges = kTriangleHeader;
     with_edges.insert(with_edges.find("end_header"), "element edge 0\nproperty int vertex1\n");
     EXPECT_EQ(ply_error(with_edges + kPlyVertices + "3 0 1 2\n"), "(no error)");
