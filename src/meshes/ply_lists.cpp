@@ -123,7 +123,9 @@ void check_count(const Element& e, std::uint64_t file_size, const std::string& p
 // assimp-testmodels PLY files have none of them.
 void check_elements(const std::vector<Element>& elements, const std::string& path) {
     using Names = std::initializer_list<std::string_view>;
-    auto one_of = [](const char* name, Names names) { return std::find(names.begin(), names.end(), name) != names.end(); };
+    auto one_of = [](const char* name, Names names) {
+        return std::find(names.begin(), names.end(), name) != names.end();
+    };
     auto elements_named = [&](Names names) {
         return std::count_if(elements.begin(), elements.end(),
                              [&](const Element& e) { return e.count > 0 && one_of(e.name, names); });

@@ -300,8 +300,8 @@ TEST(MeshLoader, ObjectsAndMaterialsMakeOneMeshWithSharedVertices) {
 TEST(MeshLoader, ObjMaterialLibrariesAreNotOpened) {
     // An OBJ's `mtllib` names any path; assimp used to open it and parse it
     // as a material library. Naming the folder itself failed the load with
-    // "file read error"; an absolute path read that file. Neither is opened
-    // now: the materials come from the scene.
+    // "file read error"; an absolute path had that file read. None is
+    // opened now: the materials come from the scene.
     for (const std::string library : {".", "/proc/self/status", "missing.mtl"}) {
         SCOPED_TRACE(library);
         expect_cube(load_mesh(write_temp_file("mtllib.obj", "mtllib " + library + "\n" + cube_obj())));

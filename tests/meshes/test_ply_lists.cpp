@@ -124,7 +124,6 @@ TEST(PlyLists, BinaryLengthsBeyondTheFile) {
     EXPECT_EQ(ply_error(big + '\1' + std::string("\0\0\0\7", 4)), "(no error)");
 }
 
-// A binary header of exactly `length` bytes: comment lines fill it out.
 // Headers whose elements assimp fills its arrays from past their end, or
 // reads through a null pointer: a second vertex element longer than the
 // first aborted the process in glibc's malloc (found while fuzzing the
@@ -132,14 +131,15 @@ TEST(PlyLists, BinaryLengthsBeyondTheFile) {
 // indices crashed it.
 TEST(PlyLists, ElementsAssimpWritesPastItsArrays) {
     const std::string xyz = "property float x\nproperty float y\nproperty float z\n";
-    const std::string two_vertex_elements = "ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "element vertex 3\n" + xyz +
-                                            "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                                            "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n";
+    const std::string two_vertex_elements =
+        "ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "element vertex 3\n" + xyz +
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n";
     EXPECT_EQ(ply_error(two_vertex_elements),
               "FILE: error: a PLY header with two 'vertex' elements (assimp 5.2.5 would write past the end of its "
               "arrays)");
     std::string face_and_strip = kTriangleHeader;
-    face_and_strip.insert(face_and_strip.find("end_header"), "element tristrips 1\nproperty list int int vertex_indices\n");
+    face_and_strip.insert(face_and_strip.find("end_header"),
+                          "element tristrips 1\nproperty list int int vertex_indices\n");
     EXPECT_EQ(ply_error(face_and_strip + kPlyVertices + "3 0 1 2\n3 0 1 2\n"),
               "FILE: error: a PLY header with two elements of faces ('face' or 'tristrips') (assimp 5.2.5 would write "
               "past the end of its arrays)");
@@ -163,6 +163,7 @@ TEST(PlyLists, ElementsAssimpWritesPastItsArrays) {
     EXPECT_EQ(ply_error(with_edges + kPlyVertices + "3 0 1 2\n"), "(no error)");
 }
 
+// A binary header of exactly `length` bytes: comment lines fill it out.
 std::string binary_header_of(std::size_t length) {
     const std::string head = "ply\nformat binary_little_endian 1.0\n";
     const std::string tail = "element face 1\nproperty list uchar uint vertex_indices\nend_header\n";
