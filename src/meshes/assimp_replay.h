@@ -4,7 +4,8 @@
 // PLY::DOM) and where each value it reads ends (fast_atof). Only what
 // decides where assimp reads, not the values: meshes/ply_lists.cpp uses it
 // to find the list lengths assimp will size lists by (and meshes/obj_lines.cpp
-// its ParsingUtils character tests). Each function is named after the one it
+// and meshes/off_lines.cpp its ParsingUtils character tests; the OFF and STL
+// checks its byte order marks). Each function is named after the one it
 // follows.
 #pragma once
 
@@ -36,6 +37,23 @@ inline std::uint32_t strtoul10(const std::string& text, std::size_t& at) {
         value = value * 10 + std::uint32_t(text[at] - '0');
     return value;
 }
+
+// BaseImporter::ConvertToUTF8, which TextFileToBuffer runs over an OFF or
+// STL file of 8 bytes or more: a UTF-8 byte order mark (EF BB BF) is
+// dropped; what it takes for a UTF-32 one (FE FF 00 00) it converts by
+// reading 4 bytes past the file's end (fixed in 6.0) -- refused, with
+// kUtf32Refused. Its other marks change nothing it then reads.
+enum class ByteOrderMark { none, utf8, utf32 };
+inline ByteOrderMark byte_order_mark(const std::string& file_start, std::uint64_t file_size) {
+    auto is = [&](const char* bytes, std::size_t n) { return file_start.compare(0, n, bytes, n) == 0; };
+    if (file_size < 8) return ByteOrderMark::none;  // "File is too small"
+    if (is("\xEF\xBB\xBF", 3)) return ByteOrderMark::utf8;
+    if (is("\xFE\xFF\0\0", 4)) return ByteOrderMark::utf32;
+    return ByteOrderMark::none;
+}
+inline constexpr const char* kUtf32Refused =
+    "the file starts with bytes FE FF 00 00, which assimp 5.2.5 takes for a UTF-32 byte order mark: converting "
+    "the text, it would read past the file's end";
 
 inline bool is_line_end(char c) { return c == '\r' || c == '\n' || c == '\0' || c == '\f'; }
 inline bool is_space(char c) { return c == ' ' || c == '\t'; }

@@ -139,60 +139,10 @@ PlyHeader check_ply_header(const std::string& path, std::uintmax_t file_size) {
     return {binary, color_channels == 3};
 }
 
-// The OFF header's vertex and face counts against the file's size: a vertex
-// takes at least two bytes per coordinate ("0 "), a face two. The header is
-// read as assimp 5.2.5's OFF reader reads it, so that the counts checked are
-// the counts it will allocate: optional ST, C, N, 4 and n before "OFF"
-// (which may be missing, and may have the counts right after it, with no
-// space: fuzzing found "OFF5555...551 4"), nOFF's dimension first, each
-// count its leading digits in 32 bits that wrap; comment lines skipped.
-void check_off_header(const std::string& path, std::uintmax_t file_size) {
-    const std::string head = read_head(path, std::size_t(1) << 16);
-    std::size_t at = 0;
-    auto next_token = [&] {  // assimp's NextToken: blanks, line ends and # lines
-        for (;;) {
-            while (at < head.size() && (head[at] == ' ' || head[at] == '\t' || head[at] == '\r' || head[at] == '\n' ||
-                                        head[at] == '\f' || head[at] == '\0'))
-                ++at;
-            if (at >= head.size() || head[at] != '#') return;
-            while (at < head.size() && head[at] != '\n') ++at;
-        }
-    };
-    auto starts = [&](const char* word) { return head.compare(at, std::strlen(word), word) == 0; };
-    next_token();
-    if (starts("ST")) at += 2;
-    if (starts("C")) ++at;
-    if (starts("N")) ++at;
-    if (starts("4")) ++at;
-    const bool has_dimension = starts("n");
-    if (has_dimension) ++at;
-    if (starts("OFF")) {
-        at += 3;
-        next_token();
-    } else {
-        next_token();
-        if (at >= head.size() || head[at] < '0' || head[at] > '9') return;  // assimp's to report
-    }
-    std::uint64_t dimensions = 3;
-    if (has_dimension) {
-        dimensions = assimp_replay::strtoul10(head, at);
-        next_token();
-    }
-    if (dimensions > 3) return;  // assimp's to report
-    next_token();
-    const std::uint64_t vertices = assimp_replay::strtoul10(head, at);
-    next_token();
-    const std::uint64_t faces = assimp_replay::strtoul10(head, at);
-    if (vertices == 0 || faces == 0) return;  // assimp's to report ("no valid vertices/faces")
-    const std::uint64_t rest = file_size - std::min<std::uintmax_t>(at, file_size);
-    std::uint64_t needed = saturating_add(saturating_mul(vertices, 2 * std::max<std::uint64_t>(dimensions, 1)),
-                                          saturating_mul(faces, 2));
-    if (needed > 0) --needed;  // the last line's newline may be missing
-    if (needed > rest)
-        throw InputError(path, "the OFF header declares " + plural(vertices, "vertex", "vertices") + " and " +
-                                   plural(faces, "face", "faces") + " (at least " + plural(needed, "byte", "bytes") +
-                                   ") but only " + plural(rest, "byte follows", "bytes follow") +
-                                   " the counts: a truncated file?");
+// An STL file goes through TextFileToBuffer, binary or not.
+void check_stl_start(const std::string& path, std::uintmax_t file_size) {
+    if (assimp_replay::byte_order_mark(read_head(path, 4), file_size) == assimp_replay::ByteOrderMark::utf32)
+        throw InputError(path, assimp_replay::kUtf32Refused);
 }
 
 }  // namespace fh

@@ -1,7 +1,9 @@
-// The counts a PLY or OFF header declares, checked against the file before
-// assimp reads it: Debian's assimp 5.2.5 loops forever on a PLY header
-// without end_header and allocates whatever a header declares (400 million
-// vertices in a 200-byte file: 4.7 GB). Counts only; the data is assimp's.
+// What a PLY header declares, and the first bytes of an STL file, checked
+// against the file before Debian's assimp 5.2.5 reads it: it loops forever
+// on a PLY header without end_header and allocates whatever a header
+// declares (400 million vertices in a 200-byte file: 4.7 GB). Counts only;
+// the data is assimp's (meshes/ply_lists.h walks it). OFF files are checked
+// whole (meshes/off_lines.h).
 #pragma once
 
 #include <cstdint>
@@ -20,6 +22,8 @@ struct PlyHeader {
 // InputError(path, ...) when the header is cut short or declares more data
 // than the file holds.
 PlyHeader check_ply_header(const std::string& path, std::uintmax_t file_size);
-void check_off_header(const std::string& path, std::uintmax_t file_size);
+// InputError(path, ...) for an STL file assimp would read past the end of
+// (assimp_replay::byte_order_mark).
+void check_stl_start(const std::string& path, std::uintmax_t file_size);
 
 }  // namespace fh

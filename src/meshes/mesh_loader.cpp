@@ -18,9 +18,15 @@
 //     the OFF reader allocate whatever count the header declares (400 million
 //     vertices in a 200-byte PLY: 4.7 GB): their headers' counts are checked
 //     against the file's size first, read as assimp reads them -- leading
-//     digits wrapped to 32 bits, "OFF" glued to the counts -- so that no
-//     garbled header hides a count it will use (src/meshes/mesh_file_headers.cpp;
-//     upstream has since fixed the loop and the OFF allocation).
+//     digits wrapped to 32 bits, "OFF" glued to the counts, a UTF-8 byte
+//     order mark dropped -- so that no garbled header hides a count it will
+//     use (src/meshes/mesh_file_headers.cpp, off_lines.cpp; upstream has
+//     since fixed the loop and the OFF allocation).
+//   - its OFF reader writes one byte past its line buffer for a line of 4,096
+//     bytes, and reads past its face array after a face line of no vertices
+//     or more than 9; OFF and STL text it reads past the file's end when it
+//     starts with what it takes for a UTF-32 byte order mark: the OFF file is
+//     read first as assimp will (meshes/off_lines.h), the STL's start checked.
 //   - a PLY face with no indices (a file cut short after its header) makes
 //     Triangulate abort the process on an assertion (assimp issue #5684): such
 //     faces are refused before triangulating.
@@ -39,16 +45,25 @@
 //     leaves its binary reader an empty block, read through a null pointer (a
 //     crash): refused by the same walk.
 //   - its OBJ importer writes past its vertex array for a line statement of
-//     one vertex (heap corruption; fixed in 5.3.0): such statements are
-//     refused first (src/meshes/obj_lines.h).
+//     one vertex (heap corruption; fixed in 5.3.0), reads past its line
+//     buffer for a vertical tab in a face statement, and past its 16 MiB
+//     cache for a "\" before a line end at a block's end: refused first
+//     (src/meshes/obj_lines.h).
+//   - a PLY face of 6 to 8 texture coordinates has them read through the
+//     vertex index of each two, past the indices of a triangle: refused by
+//     the PLY walk.
 //   - an OBJ file's `mtllib` makes it open any path the file names (an
 //     absolute one, a folder, /dev/..., the other mesh files beside it) and
 //     parse it as a material library, a second parser on bytes nobody meant
-//     for it: assimp opens only the mesh file itself (OnlyThisFile). The
-//     materials come from the scene; a mesh never reads other files.
+//     for it: assimp opens only the mesh file itself (OnlyThisFile), any
+//     other path as an empty file -- a path it could not open, it would
+//     "clean up", reading past the end of a name that ends in "://" (a
+//     crash). The materials come from the scene; a mesh never reads other
+//     files.
 #include "meshes/mesh_loader.h"
 
 #include <assimp/DefaultIOSystem.h>
+#include <assimp/MemoryIOWrapper.h>
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
@@ -74,6 +89,7 @@
 #include "meshes/assimp_messages.h"
 #include "meshes/mesh_file_headers.h"
 #include "meshes/obj_lines.h"
+#include "meshes/off_lines.h"
 #include "meshes/ply_lists.h"
 #include "meshes/mesh_records.h"
 #include "meshes/mesh_text.h"
@@ -97,8 +113,12 @@ public:
     using DefaultIOSystem::Exists;
     using DefaultIOSystem::Open;
     bool Exists(const char* file) const override { return path_ == file && DefaultIOSystem::Exists(file); }
+    // Any other path opens as an empty file. Refusing it (nullptr) would
+    // send assimp's FileSystemFilter on to "clean up" the name, which reads
+    // past the end of one ending in "://" (a crash: `mtllib a://`).
     Assimp::IOStream* Open(const char* file, const char* mode) override {
-        return path_ == file ? DefaultIOSystem::Open(file, mode) : nullptr;
+        static const std::uint8_t kNothing = 0;
+        return path_ == file ? DefaultIOSystem::Open(file, mode) : new Assimp::MemoryIOStream(&kNothing, 0);
     }
 
 private:
@@ -408,7 +428,8 @@ MeshData load_mesh(const std::string& path, std::size_t max_triangles) {
         colors_drawn = header.colors;
         check_ply_lists(path);
     }
-    if (format == Format::off) check_off_header(path, size);
+    if (format == Format::off) check_off_file(path);
+    if (format == Format::stl) check_stl_start(path, size);
     if (format == Format::obj) colors_drawn = check_obj_lines(path);
     try {
         AssimpMessages log;

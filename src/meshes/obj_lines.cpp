@@ -1,5 +1,7 @@
 #include "meshes/obj_lines.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 
@@ -13,6 +15,10 @@ namespace {
 using assimp_replay::is_line_end;
 using assimp_replay::is_space;
 using assimp_replay::is_space_or_line_end;
+
+// IOStreamBuffer's cache: the file is read in blocks of this size.
+constexpr std::uint64_t kCache = std::uint64_t(1) << 24;
+constexpr std::uint64_t kNoSkip = ~std::uint64_t(0);
 
 // What getFace makes of a line statement, besides a count of vertices.
 enum : int { kAssimpRefuses = -1, kPastTheLine = -2 };
@@ -75,11 +81,13 @@ bool check_obj_lines(const std::string& path) {
     int number = 1, starts = 1;
     bool texture_coordinates = false, normals = false;
     std::size_t vertex_statements = 0, colored_vertices = 0;
+    bool vertical_tab = false;  // in the statement
     auto take = [&](char c) {
         if (length == 0) first = c;
         if (length == 1) second = c;
         ++length;
         if (first == 'l' || first == 'v') line += c;
+        vertical_tab |= c == '\v';
     };
     auto untake = [&] {  // the last character taken
         --length;
@@ -96,6 +104,13 @@ bool check_obj_lines(const std::string& path) {
                 colored_vertices += words(line) == 7;  // "v" and six numbers
             }
         }
+        // getFace reads each index by atoi, which skips a vertical tab and
+        // then the line's end, and reads on past the end of assimp's line
+        // buffer when the statement fills it (a file of one line).
+        if (vertical_tab && (first == 'f' || first == 'l' || first == 'p'))
+            throw InputError(path, starts, 1,
+                             "a vertical tab (byte 0x0b) in a face statement, which assimp 5.2.5 reads past "
+                             "(its atoi skips it and the line's end)");
         if (first == 'l') {
             const int n = line_vertices(line, texture_coordinates, normals);
             const char* why = n == 1 ? "a line statement of one vertex, for which assimp 5.2.5 writes past the end of "
@@ -108,16 +123,45 @@ bool check_obj_lines(const std::string& path) {
         line.clear();
         first = second = '\0';
         length = 0;
+        vertical_tab = false;
     };
     // getNextDataLine: "\" before a line end drops both, skips to the next
     // '\n' and takes the character after it unexamined.
     enum { kReading, kSkipping, kTaking } state = kReading;
     bool backslash = false;  // the last character read (and examined) was "\"
+    // Its cache of 16 MiB: a "\" on a block's last byte makes it look at the
+    // byte after the cache, and one before a line end other than '\n' makes
+    // it look for the next '\n' -- past the cache where none follows in the
+    // block. Raw bytes are enough: the file's blocks are the cache's.
+    // (The file's last byte too: what follows it there is left from the
+    // block before.)
+    in.seekg(0, std::ios::end);
+    const std::uint64_t size = std::uint64_t(std::max<std::streamoff>(in.tellg(), 0));
+    const bool over_a_block = size > kCache;
+    in.seekg(0);
+    std::uint64_t offset = 0;
+    std::uint64_t skip_block = kNoSkip;  // the block a "\" + line end was seen in, until its '\n'
+    auto past_the_cache = [&] {
+        throw InputError(path, number, 1,
+                         "a '\\' before a line end that makes assimp 5.2.5 read past the end of its 16 MiB "
+                         "line cache");
+    };
     char chunk[1 << 16];
     while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
         const std::streamsize n = in.gcount();
-        for (std::streamsize k = 0; k < n; ++k) {
+        for (std::streamsize k = 0; k < n; ++k, ++offset) {
             const char c = chunk[k];
+            if (over_a_block) {
+                const std::uint64_t block = offset / kCache;
+                if (c == '\n' && skip_block != kNoSkip) {
+                    if (skip_block != block) past_the_cache();
+                    skip_block = kNoSkip;
+                }
+                const char next = k + 1 < n ? chunk[k + 1] : char(in.peek());
+                if (c == '\\' && (offset % kCache == kCache - 1 || offset + 1 == size)) past_the_cache();
+                if (c == '\\' && (next == '\r' || next == '\0' || next == '\f') && skip_block == kNoSkip)
+                    skip_block = (offset + 1) / kCache;
+            }
             if (c == '\n') ++number;
             if (state == kSkipping) {
                 if (c == '\n') state = kTaking;
@@ -144,6 +188,7 @@ bool check_obj_lines(const std::string& path) {
             take(c);
         }
     }
+    if (skip_block != kNoSkip) past_the_cache();
     if (length > 0) statement_ends();
     return vertex_statements > 0 && colored_vertices == vertex_statements;
 }

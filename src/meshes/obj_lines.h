@@ -5,6 +5,12 @@
 // copied vertex lands past the end of the array (heap corruption: a 54-byte
 // file aborts the process in glibc's malloc; fuzzing found it, and assimp
 // 5.3.0 fixed it). firsthit draws no lines, so such a file is refused.
+// So is a vertical tab in a face, line or point statement: getFace reads
+// each index by atoi, which skips the tab and the line's end after it and
+// reads on, past the end of assimp's line buffer when the statement fills
+// it. And in a file over 16 MiB, a "\" before a line end where the line
+// reader would look past its 16 MiB cache for the next '\n' (assimp reads
+// the file in blocks of that size; no fix upstream).
 //
 // A statement is split into lines as IOStreamBuffer::getNextDataLine does
 // ("\" before a line end joins the next line) and read as

@@ -145,13 +145,54 @@ void check_elements(const std::vector<Element>& elements, const std::string& pat
     }
 }
 
+// A face's texture coordinates (LoadFace): for a list of 6, 7 or 8 values
+// assimp reads the vertex index of each two, the fourth for the seventh
+// and eighth, whatever the face's own count (still so in 6.0): past the
+// indices of a triangle. The properties' indices of the face element's
+// (last) vertex index and texture coordinate lists, where it has both.
+struct FaceLists {
+    int indices = -1, texcoords = -1;
+};
+
+FaceLists face_lists(const Element& e) {
+    FaceLists f;
+    if (std::string_view(e.name) != "face") return f;
+    for (std::size_t k = 0; k < e.properties.size(); ++k) {
+        const std::string_view name = e.properties[k].name;
+        if (!e.properties[k].list) continue;
+        if (name == "vertex_index" || name == "vertex_indices") f.indices = int(k);
+        if (name == "texcoord") f.texcoords = int(k);
+    }
+    if (f.indices < 0) f.texcoords = -1;  // check_elements refuses these
+    return f;
+}
+
+// Each property's number of values in one instance: true where assimp
+// reads the indices far enough for the coordinates.
+bool indices_cover_texcoords(const FaceLists& f, const std::vector<std::uint64_t>& values) {
+    if (f.texcoords < 0) return true;
+    const std::uint64_t t = values[size_t(f.texcoords)];
+    return t / 3 != 2 || values[size_t(f.indices)] > (t - 1) / 2;
+}
+
+std::string texcoords_past_indices(const FaceLists& f, const std::vector<std::uint64_t>& values) {
+    return "a PLY face with " + std::to_string(values[size_t(f.texcoords)]) + " texture coordinates but " +
+           std::to_string(values[size_t(f.indices)]) +
+           " vertex indices: assimp 5.2.5 would read past the indices (one for each two coordinates)";
+}
+
 // One ASCII line of an element assimp parses (ElementInstance::ParseInstance):
-// false where assimp throws and reads no further.
-bool check_ascii_instance(const Buffer& b, const Element& e, const std::string& path, int line) {
+// false where assimp throws and reads no further. `values`, where given,
+// gets each property's number of values as assimp keeps them: a list's
+// length, one more where the line ends inside it, and 1 for a property
+// the line ends before.
+bool check_ascii_instance(const Buffer& b, const Element& e, const std::string& path, int line,
+                          std::vector<std::uint64_t>* values = nullptr) {
     std::size_t i = 0;
     for (std::size_t k = 0; k < e.properties.size(); ++k) {
         const Property& p = e.properties[k];
         while (is_space(b.at(i))) ++i;
+        if (values) (*values)[k] = 1;
         if (is_line_end(b.at(i))) continue;  // missing: assimp puts a default in
         std::uint64_t length = 0;
         const int column = int(i) + 1;
@@ -166,14 +207,15 @@ bool check_ascii_instance(const Buffer& b, const Element& e, const std::string& 
                                      std::to_string(room) + " bytes follow on its line (a corrupt file?)");
             }
             // The last property (the faces' usual list): nothing is read after it.
-            if (k + 1 == e.properties.size()) return true;
+            if (k + 1 == e.properties.size() && !values) return true;
             bool whole = true;
             for (std::uint64_t n = 0; n < length && whole; ++n) {
                 while (is_space(b.at(i))) ++i;
                 if (is_line_end(b.at(i))) whole = false;  // assimp leaves the list short
                 else if (std::uint64_t unused; !parse_value(b, i, p.value, unused)) return false;
             }
-            if (!whole) continue;
+            if (values) (*values)[k] = whole ? length : length + 1;  // a default after the short list
+            if (!whole || k + 1 == e.properties.size()) continue;
         }
         // SkipSpacesAndLineEnd: past this line's end, the next property
         // would be read from what an earlier line left in the buffer.
@@ -197,11 +239,16 @@ void check_ascii(StreamBuffer& stream, Buffer& b, const std::vector<Element>& el
         // Only lists are sized by what is read: the other elements' lines
         // are passed over (reading them changes nothing in the buffer).
         const bool lists = e.has_list();
+        const FaceLists face = face_lists(e);
+        std::vector<std::uint64_t> values(e.properties.size());
         check_count(e, file_size, path);
         for (std::uint32_t n = 0; n < e.count; ++n) {
             std::size_t erased = 0;
             if (parsed) {
-                if (lists && !check_ascii_instance(b, e, path, stream.lines())) return;
+                if (lists && !check_ascii_instance(b, e, path, stream.lines(), face.texcoords >= 0 ? &values : nullptr))
+                    return;
+                if (!indices_cover_texcoords(face, values))
+                    throw InputError(path, stream.lines(), 1, texcoords_past_indices(face, values));
             } else {
                 erased = skip_comments(b);
                 erased += skip_line(b);
@@ -254,8 +301,12 @@ void check_binary(FileBlocks& file, std::uint64_t at, bool big_endian, const std
             at += std::uint64_t(bytes) * e.count;
             continue;
         }
-        for (std::uint32_t n = 0; n < e.count; ++n)
-            for (const Property& p : e.properties) {
+        const FaceLists face = face_lists(e);
+        std::vector<std::uint64_t> values(e.properties.size(), 1);
+        for (std::uint32_t n = 0; n < e.count; ++n) {
+            const std::uint64_t starts = at;
+            for (std::size_t k = 0; k < e.properties.size(); ++k) {
+                const Property& p = e.properties[k];
                 if (!p.list) {
                     read(p.value);
                     continue;
@@ -267,7 +318,12 @@ void check_binary(FileBlocks& file, std::uint64_t at, bool big_endian, const std
                                                std::to_string(file.size() - at) +
                                                " bytes follow (a corrupt or truncated file?)");
                 at += length * bytes_of(p.value);
+                values[k] = length;
             }
+            if (!indices_cover_texcoords(face, values))
+                throw InputError(path, texcoords_past_indices(face, values) + " (the face at byte " +
+                                           std::to_string(starts) + ")");
+        }
     }
 }
 

@@ -13,7 +13,9 @@
 // itself would give up on a value (it throws), the check stops: assimp
 // reads no further. The header's elements are checked too: a second vertex
 // or face element makes assimp write past its arrays, a face element of
-// texture coordinates without indices read through a null pointer.
+// texture coordinates without indices read through a null pointer -- and
+// so are a face's 6 to 8 texture coordinates over fewer than 3 or 4 vertex
+// indices, which assimp reads past (one index for each two coordinates).
 #pragma once
 
 #include <string>

@@ -57,6 +57,35 @@ TEST(ObjLines, ReadingPastTheLineIsRefused) {
               "reads on past its line (firsthit draws no lines)");
 }
 
+TEST(ObjLines, VerticalTabsInFacesAreRefused) {
+    // atoi skips a vertical tab and the line's end after it, and reads on
+    // past the end of assimp's line buffer where the statement fills it.
+    const std::string refused = "error: a vertical tab (byte 0x0b) in a face statement, which assimp 5.2.5 reads "
+                                "past (its atoi skips it and the line's end)";
+    EXPECT_EQ(obj_error("f 1 2 3 4 5 6 7\v\n"), "FILE:1:1: " + refused);
+    EXPECT_EQ(obj_error(kObjVertices + "p 1\n# \v\nl 1 2\v3\n"), "FILE:6:1: " + refused);
+    EXPECT_EQ(obj_error(kObjVertices + "# \v\nf 1 2 3\n"), "(no error)");
+}
+
+TEST(ObjLines, BackslashesAtTheCachesEndAreRefused) {
+    // assimp reads an OBJ file in blocks of 16 MiB: a "\\" on a block's last
+    // byte makes it look at the byte after its cache, and one before a "\r"
+    // makes it look for the next '\n' -- past the cache where none follows
+    // in the block.
+    constexpr std::size_t kBlock = std::size_t(1) << 24;
+    auto obj_with_backslash_at = [](std::size_t at, const std::string& after) {
+        std::string obj = kObjVertices + "f 1 2 3\n# ";
+        obj += std::string(at - obj.size(), 'x') + "\\" + after + "f 1 2 3\n";
+        return obj;
+    };
+    const std::string refused = "FILE:5:1: error: a '\\' before a line end that makes assimp 5.2.5 read past the end "
+                                "of its 16 MiB line cache";
+    EXPECT_EQ(obj_error(obj_with_backslash_at(kBlock - 1, "\n")), refused);
+    EXPECT_EQ(obj_error(obj_with_backslash_at(kBlock - 2, "\r\n")), refused);  // the '\n' in the next block
+    EXPECT_EQ(obj_error(obj_with_backslash_at(kBlock - 2, "\n")), "(no error)");
+    EXPECT_EQ(obj_error(obj_with_backslash_at(kBlock - 3, "\r\n")), "(no error)");
+}
+
 // At the loader: the 54-byte file that aborted the process in glibc's malloc.
 TEST(ObjLines, TheLoaderRefusesBeforeAssimpReads) {
     const std::string path = test::write_temp_file("overflow.obj", kObjVertices + "l 1\nl 1\nl 1 2 3\n");

@@ -163,6 +163,31 @@ TEST(PlyLists, ElementsAssimpWritesPastItsArrays) {
     EXPECT_EQ(ply_error(with_edges + kPlyVertices + "3 0 1 2\n"), "(no error)");
 }
 
+TEST(PlyLists, TextureCoordinatesPastTheIndices) {
+    // For a face's list of 6, 7 or 8 texture coordinates assimp reads the
+    // vertex index of each two (the fourth for the seventh and eighth),
+    // whatever the face's own count: past a triangle's three.
+    std::string header = kTriangleHeader;
+    header.insert(header.find("end_header"), "property list uchar float texcoord\n");
+    EXPECT_EQ(ply_error(header + kPlyVertices + "3 0 1 2 6 0 0 1 0 0 1\n"), "(no error)");
+    EXPECT_EQ(ply_error(header + kPlyVertices + "4 0 1 2 2 8 0 0 1 0 0 1 1 1\n"), "(no error)");
+    EXPECT_EQ(ply_error(header + kPlyVertices + "3 0 1 2 8 0 0 1 0 0 1 1 1\n"),
+              "FILE:14:1: error: a PLY face with 8 texture coordinates but 3 vertex indices: assimp 5.2.5 would "
+              "read past the indices (one for each two coordinates)");
+    // A list the line ends inside gets a value more: 6 given as 7.
+    EXPECT_EQ(ply_error(header + kPlyVertices + "3 0 1 2 6 0 0 1\n"),
+              "FILE:14:1: error: a PLY face with 7 texture coordinates but 3 vertex indices: assimp 5.2.5 would "
+              "read past the indices (one for each two coordinates)");
+    // The coordinates first, the indices after them, in binary.
+    std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                         "property float y\nproperty float z\nelement face 1\nproperty list uchar float texcoord\n"
+                         "property list uchar uint vertex_indices\nend_header\n";
+    binary += std::string(36, '\0') + '\6' + std::string(24, '\0') + '\2' + le32(0) + le32(1);
+    EXPECT_EQ(ply_error(binary),
+              "FILE: error: a PLY face with 6 texture coordinates but 2 vertex indices: assimp 5.2.5 would read "
+              "past the indices (one for each two coordinates) (the face at byte 241)");
+}
+
 // A binary header of exactly `length` bytes: comment lines fill it out.
 std::string binary_header_of(std::size_t length) {
     const std::string head = "ply\nformat binary_little_endian 1.0\n";
