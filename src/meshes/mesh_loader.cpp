@@ -50,8 +50,9 @@
 //     cache for a "\" before a line end at a block's end: refused first
 //     (src/meshes/obj_lines.h).
 //   - a PLY face of 6 to 8 texture coordinates has them read through the
-//     vertex index of each two, past the indices of a triangle: refused by
-//     the PLY walk.
+//     vertex index of each two, past the indices of a triangle, and a value
+//     it cannot read on a line that fills its 1 MiB buffer it quotes with
+//     strlen, past the buffer: refused by the PLY walk.
 //   - an OBJ file's `mtllib` makes it open any path the file names (an
 //     absolute one, a folder, /dev/..., the other mesh files beside it) and
 //     parse it as a material library, a second parser on bytes nobody meant

@@ -181,6 +181,18 @@ std::string texcoords_past_indices(const FaceLists& f, const std::vector<std::ui
            " vertex indices: assimp 5.2.5 would read past the indices (one for each two coordinates)";
 }
 
+// Where assimp gives up on a value at b[i] (fast_atoreal_move throws): its
+// message quotes the rest of the buffer, measured by strlen -- past the
+// buffer's end when no zero follows, as on a line that fills it (a line of
+// 1 MiB - 1 bytes). Returns false: assimp reads no further.
+bool gives_up(const Buffer& b, std::size_t i, const std::string& path, int line) {
+    if (b.bytes.find('\0', i) == std::string::npos)
+        throw InputError(path, line, int(i) + 1,
+                         "a value assimp 5.2.5 cannot read, on a line that fills its buffer: quoting it, assimp "
+                         "would read past the buffer");
+    return false;
+}
+
 // One ASCII line of an element assimp parses (ElementInstance::ParseInstance):
 // false where assimp throws and reads no further. `values`, where given,
 // gets each property's number of values as assimp keeps them: a list's
@@ -196,7 +208,7 @@ bool check_ascii_instance(const Buffer& b, const Element& e, const std::string& 
         if (is_line_end(b.at(i))) continue;  // missing: assimp puts a default in
         std::uint64_t length = 0;
         const int column = int(i) + 1;
-        if (!parse_value(b, i, p.list ? p.length : p.value, length)) return false;
+        if (!parse_value(b, i, p.list ? p.length : p.value, length)) return gives_up(b, i, path, line);
         if (p.list) {
             std::size_t room = 0;  // at least a byte a value
             while (room <= length && !is_line_end(b.at(i + room))) ++room;
@@ -212,7 +224,7 @@ bool check_ascii_instance(const Buffer& b, const Element& e, const std::string& 
             for (std::uint64_t n = 0; n < length && whole; ++n) {
                 while (is_space(b.at(i))) ++i;
                 if (is_line_end(b.at(i))) whole = false;  // assimp leaves the list short
-                else if (std::uint64_t unused; !parse_value(b, i, p.value, unused)) return false;
+                else if (std::uint64_t unused; !parse_value(b, i, p.value, unused)) return gives_up(b, i, path, line);
             }
             if (values) (*values)[k] = whole ? length : length + 1;  // a default after the short list
             if (!whole || k + 1 == e.properties.size()) continue;

@@ -188,6 +188,21 @@ TEST(PlyLists, TextureCoordinatesPastTheIndices) {
               "past the indices (one for each two coordinates) (the face at byte 241)");
 }
 
+TEST(PlyLists, ValuesAssimpQuotesPastItsBuffer) {
+    // assimp's error for a value it cannot read quotes the rest of its line
+    // buffer up to a zero byte: past the buffer when the line fills it.
+    std::string header = kTriangleHeader;
+    header.insert(header.find("end_header"), "property float q\n");
+    EXPECT_EQ(ply_error(header + kPlyVertices + "3 0 1 2 x\n"), "(no error)");  // assimp's to refuse
+    std::string line = "3 0 1 2 x";
+    line += std::string((std::size_t(1) << 20) - 1 - line.size(), 'y');
+    EXPECT_EQ(ply_error(header + kPlyVertices + line + "\n"),
+              "FILE:14:9: error: a value assimp 5.2.5 cannot read, on a line that fills its buffer: quoting it, "
+              "assimp would read past the buffer");
+    line.pop_back();
+    EXPECT_EQ(ply_error(header + kPlyVertices + line + "\n"), "(no error)");
+}
+
 // A binary header of exactly `length` bytes: comment lines fill it out.
 std::string binary_header_of(std::size_t length) {
     const std::string head = "ply\nformat binary_little_endian 1.0\n";
