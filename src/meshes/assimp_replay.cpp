@@ -7,6 +7,7 @@ namespace fh::assimp_replay {
 
 bool StreamBuffer::get_next_line(Buffer& buffer) {
     copied_ = false;
+    length_ = 0;
     buffer.bytes.resize(cache_size_);
     if (cache_pos_ == cache_size_ || file_pos_ == 0)
         if (!read_next_block()) return false;
@@ -29,6 +30,7 @@ bool StreamBuffer::get_next_line(Buffer& buffer) {
         while (buffer.bytes.size() <= i + n) buffer.bytes.resize(buffer.bytes.size() * 2);
         std::memcpy(&buffer.bytes[i], &cache_[cache_pos_], n);
         i += n;
+        length_ = i;
         cache_pos_ += n;
         if (cache_pos_ >= cache_size_ && !read_next_block()) return false;
     }

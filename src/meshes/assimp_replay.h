@@ -116,6 +116,8 @@ public:
     bool next_block_empty() const { return cache_pos_ == cache_.size(); }
     int lines() const { return lines_; }  // read so far (the last one's number)
     bool copied() const { return copied_; }  // the last get_next_line wrote into the buffer
+    std::size_t line_length() const { return length_; }  // the bytes it copied, before its '\n'
+
 
 private:
     char cache(std::size_t i) const {
@@ -130,6 +132,7 @@ private:
     std::uint64_t file_pos_ = 0;
     int lines_ = 0;
     bool copied_ = false;
+    std::size_t length_ = 0;
 };
 
 // Where assimp's pointer walks stop, from b[i] on: past spaces and tabs

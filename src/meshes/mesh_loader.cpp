@@ -46,13 +46,16 @@
 //     crash): refused by the same walk.
 //   - its OBJ importer writes past its vertex array for a line statement of
 //     one vertex (heap corruption; fixed in 5.3.0), reads past its line
-//     buffer for a vertical tab in a face statement, and past its 16 MiB
+//     buffer for a vertical tab or a vertex of four indices in a face,
+//     line or point statement, and past its 16 MiB
 //     cache for a "\" before a line end at a block's end: refused first
 //     (src/meshes/obj_lines.h).
 //   - a PLY face of 6 to 8 texture coordinates has them read through the
-//     vertex index of each two, past the indices of a triangle, and a value
-//     it cannot read on a line that fills its 1 MiB buffer it quotes with
-//     strlen, past the buffer: refused by the PLY walk.
+//     vertex index of each two, past the indices of a triangle; a line of
+//     1 MiB - 1 bytes fills its line buffer, and the parser reads past it;
+//     past the data's end it reads the last line again for each instance the
+//     header still declares (n^2 values from a list of n): refused by the
+//     PLY walk.
 //   - an OBJ file's `mtllib` makes it open any path the file names (an
 //     absolute one, a folder, /dev/..., the other mesh files beside it) and
 //     parse it as a material library, a second parser on bytes nobody meant

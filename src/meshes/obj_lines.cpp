@@ -55,6 +55,10 @@ int line_vertices(const std::string& line, bool texture_coordinates, bool normal
     return vertices;
 }
 
+// The statements whose text the check keeps: vertices (their colours),
+// and the face, line and point statements getFace reads.
+bool kept(char first) { return first == 'v' || first == 'f' || first == 'l' || first == 'p'; }
+
 // The words of a statement, separated by spaces and tabs.
 int words(const std::string& statement) {
     int n = 0;
@@ -86,12 +90,12 @@ bool check_obj_lines(const std::string& path) {
         if (length == 0) first = c;
         if (length == 1) second = c;
         ++length;
-        if (first == 'l' || first == 'v') line += c;
+        if (kept(first)) line += c;
         vertical_tab |= c == '\v';
     };
     auto untake = [&] {  // the last character taken
         --length;
-        if (first == 'l' || first == 'v') line.pop_back();
+        if (kept(first)) line.pop_back();
         if (length == 0) first = '\0';
         if (length == 1) second = '\0';
     };
@@ -107,18 +111,24 @@ bool check_obj_lines(const std::string& path) {
         // getFace reads each index by atoi, which skips a vertical tab and
         // then the line's end, and reads on past the end of assimp's line
         // buffer when the statement fills it (a file of one line).
-        if (vertical_tab && (first == 'f' || first == 'l' || first == 'p'))
+        const bool face = first == 'f' || first == 'l' || first == 'p';  // getFace reads all three
+        if (face && vertical_tab)
             throw InputError(path, starts, 1,
                              "a vertical tab (byte 0x0b) in a face statement, which assimp 5.2.5 reads past "
                              "(its atoi skips it and the line's end)");
-        if (first == 'l') {
+        if (face) {
             const int n = line_vertices(line, texture_coordinates, normals);
-            const char* why = n == 1 ? "a line statement of one vertex, for which assimp 5.2.5 writes past the end of "
-                                       "its vertex array"
-                              : n == kPastTheLine ? "a line statement with a vertex of more than three indices, which "
-                                                    "assimp 5.2.5 reads on past its line"
-                                                  : nullptr;
-            if (why) throw InputError(path, starts, 1, std::string(why) + " (firsthit draws no lines)");
+            const std::string kind = first == 'f' ? "face" : first == 'l' ? "line" : "point";
+            const std::string unused = first == 'f' ? "" : first == 'l' ? " (firsthit draws no lines)"
+                                                                         : " (firsthit draws no points)";
+            if (first == 'l' && n == 1)
+                throw InputError(path, starts, 1,
+                                 "a line statement of one vertex, for which assimp 5.2.5 writes past the end of its "
+                                 "vertex array" + unused);
+            if (n == kPastTheLine)
+                throw InputError(path, starts, 1,
+                                 "a " + kind + " statement with a vertex of more than three indices, which assimp "
+                                 "5.2.5 reads on past its line" + unused);
         }
         line.clear();
         first = second = '\0';

@@ -17,8 +17,9 @@
 // ObjFileParser::getFace reads it: each value by atoi, the step past it by
 // its digits. A vertex of more than three indices ("1/2/3/4") makes getFace
 // skip to the next line end -- past the statement's own, into what
-// assimp's line buffer holds from earlier lines: that statement is refused
-// too.
+// assimp's line buffer holds from earlier lines, and past the buffer's end
+// when the statement fills it (a file of one line; fixed in 5.3.0): a face,
+// line or point statement with one is refused too.
 #pragma once
 
 #include <string>

@@ -181,18 +181,6 @@ std::string texcoords_past_indices(const FaceLists& f, const std::vector<std::ui
            " vertex indices: assimp 5.2.5 would read past the indices (one for each two coordinates)";
 }
 
-// Where assimp gives up on a value at b[i] (fast_atoreal_move throws): its
-// message quotes the rest of the buffer, measured by strlen -- past the
-// buffer's end when no zero follows, as on a line that fills it (a line of
-// 1 MiB - 1 bytes). Returns false: assimp reads no further.
-bool gives_up(const Buffer& b, std::size_t i, const std::string& path, int line) {
-    if (b.bytes.find('\0', i) == std::string::npos)
-        throw InputError(path, line, int(i) + 1,
-                         "a value assimp 5.2.5 cannot read, on a line that fills its buffer: quoting it, assimp "
-                         "would read past the buffer");
-    return false;
-}
-
 // One ASCII line of an element assimp parses (ElementInstance::ParseInstance):
 // false where assimp throws and reads no further. `values`, where given,
 // gets each property's number of values as assimp keeps them: a list's
@@ -208,7 +196,7 @@ bool check_ascii_instance(const Buffer& b, const Element& e, const std::string& 
         if (is_line_end(b.at(i))) continue;  // missing: assimp puts a default in
         std::uint64_t length = 0;
         const int column = int(i) + 1;
-        if (!parse_value(b, i, p.list ? p.length : p.value, length)) return gives_up(b, i, path, line);
+        if (!parse_value(b, i, p.list ? p.length : p.value, length)) return false;
         if (p.list) {
             std::size_t room = 0;  // at least a byte a value
             while (room <= length && !is_line_end(b.at(i + room))) ++room;
@@ -224,7 +212,7 @@ bool check_ascii_instance(const Buffer& b, const Element& e, const std::string& 
             for (std::uint64_t n = 0; n < length && whole; ++n) {
                 while (is_space(b.at(i))) ++i;
                 if (is_line_end(b.at(i))) whole = false;  // assimp leaves the list short
-                else if (std::uint64_t unused; !parse_value(b, i, p.value, unused)) return gives_up(b, i, path, line);
+                else if (std::uint64_t unused; !parse_value(b, i, p.value, unused)) return false;
             }
             if (values) (*values)[k] = whole ? length : length + 1;  // a default after the short list
             if (!whole || k + 1 == e.properties.size()) continue;
@@ -243,10 +231,24 @@ bool check_ascii_instance(const Buffer& b, const Element& e, const std::string& 
     return true;
 }
 
+// assimp's line buffer is 1 MiB (its size doubles only when a line
+// reaches it): a line one byte shorter leaves its '\n' on the buffer's last
+// byte, and the parser's walk past that '\n' reads past the buffer.
+constexpr std::size_t kFullLine = (std::size_t(1) << 20) - 1;
+
 void check_ascii(StreamBuffer& stream, Buffer& b, const std::vector<Element>& elements, const std::string& path,
                  std::uint64_t file_size) {
-    stream.get_next_line(b);
-    for (const Element& e : elements) {
+    auto next_line = [&] {
+        const bool read = stream.get_next_line(b);
+        if (stream.line_length() >= kFullLine)
+            throw InputError(path, stream.lines(), 1,
+                             "a PLY line of " + std::to_string(stream.line_length()) +
+                                 " bytes: assimp 5.2.5 would read past its 1 MiB line buffer after it");
+        return read;
+    };
+    next_line();
+    for (auto e_at = elements.begin(); e_at != elements.end(); ++e_at) {
+        const Element& e = *e_at;
         const bool parsed = e.parsed_in_ascii && !e.properties.empty();
         // Only lists are sized by what is read: the other elements' lines
         // are passed over (reading them changes nothing in the buffer).
@@ -266,9 +268,19 @@ void check_ascii(StreamBuffer& stream, Buffer& b, const std::vector<Element>& el
                 erased += skip_line(b);
             }
             const std::size_t size = b.bytes.size();
-            // Past the end the buffer stays as it is: every later line of
-            // this element would be read as this one was.
-            if (!stream.get_next_line(b) && !stream.copied() && erased == 0 && b.bytes.size() == size) break;
+            // Past the end the buffer stays as it is: every instance the
+            // header still declares would be read from this line again --
+            // a list of n values, n values each time: n^2 from 2n bytes
+            // (120 KB took 14 GB).
+            if (!next_line() && !stream.copied() && erased == 0 && b.bytes.size() == size) {
+                std::uint64_t left = e.count - n - 1;
+                for (auto later = e_at + 1; later != elements.end(); ++later) left += later->count;
+                if (left > 0)
+                    throw InputError(path, "the PLY data ends " + std::to_string(left) +
+                                               " element instances before its header says (a truncated file?); "
+                                               "assimp 5.2.5 would read its last line again for each");
+                break;
+            }
         }
     }
 }

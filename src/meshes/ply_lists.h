@@ -15,9 +15,10 @@
 // or face element makes assimp write past its arrays, a face element of
 // texture coordinates without indices read through a null pointer -- and
 // so are a face's 6 to 8 texture coordinates over fewer than 3 or 4 vertex
-// indices, which assimp reads past (one index for each two coordinates),
-// and a value it cannot read on a line that fills its buffer, which its
-// error message quotes up to a zero byte that is not there.
+// indices, which assimp reads past (one index for each two coordinates), a
+// line of 1 MiB - 1 bytes, past which it reads its 1 MiB line buffer, and
+// data that ends before its elements do (assimp reads the last line again
+// for each instance left: n^2 values from a list of n).
 #pragma once
 
 #include <string>

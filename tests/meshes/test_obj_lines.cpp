@@ -55,6 +55,14 @@ TEST(ObjLines, ReadingPastTheLineIsRefused) {
     EXPECT_EQ(obj_error(kObjVertices + "l 1/1/1/1 2\n"),
               "FILE:4:1: error: a line statement with a vertex of more than three indices, which assimp 5.2.5 "
               "reads on past its line (firsthit draws no lines)");
+    // Faces and points too: a one-line file is read past the buffer's end.
+    EXPECT_EQ(obj_error("f 1/1/1/1      \n"),
+              "FILE:1:1: error: a face statement with a vertex of more than three indices, which assimp 5.2.5 "
+              "reads on past its line");
+    EXPECT_EQ(obj_error(kObjVertices + "f 1 2 3\np 1/1/1/1\n"),
+              "FILE:5:1: error: a point statement with a vertex of more than three indices, which assimp 5.2.5 "
+              "reads on past its line (firsthit draws no points)");
+    EXPECT_EQ(obj_error(kObjVertices + "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\np 2\n"), "(no error)");
 }
 
 TEST(ObjLines, VerticalTabsInFacesAreRefused) {

@@ -188,19 +188,39 @@ TEST(PlyLists, TextureCoordinatesPastTheIndices) {
               "past the indices (one for each two coordinates) (the face at byte 241)");
 }
 
-TEST(PlyLists, ValuesAssimpQuotesPastItsBuffer) {
-    // assimp's error for a value it cannot read quotes the rest of its line
-    // buffer up to a zero byte: past the buffer when the line fills it.
+TEST(PlyLists, LinesThatFillAssimpsBuffer) {
+    // A line of 1 MiB - 1 bytes leaves its '\n' on the last byte of
+    // assimp's 1 MiB line buffer: the parser's walk past it reads past the
+    // buffer, valid values or not (and the error for a value it cannot read
+    // quotes the line with strlen, which finds no zero byte in it).
+    std::string vertex = "0 0 0";
+    vertex += std::string((std::size_t(1) << 20) - 1 - vertex.size(), ' ');
+    EXPECT_EQ(ply_error(kTriangleHeader + vertex + "\n1 0 0\n0 1 0\n3 0 1 2\n"),
+              "FILE:10:1: error: a PLY line of 1048575 bytes: assimp 5.2.5 would read past its 1 MiB line buffer "
+              "after it");
+    vertex.pop_back();
+    EXPECT_EQ(ply_error(kTriangleHeader + vertex + "\n1 0 0\n0 1 0\n3 0 1 2\n"), "(no error)");
     std::string header = kTriangleHeader;
     header.insert(header.find("end_header"), "property float q\n");
-    EXPECT_EQ(ply_error(header + kPlyVertices + "3 0 1 2 x\n"), "(no error)");  // assimp's to refuse
-    std::string line = "3 0 1 2 x";
-    line += std::string((std::size_t(1) << 20) - 1 - line.size(), 'y');
-    EXPECT_EQ(ply_error(header + kPlyVertices + line + "\n"),
-              "FILE:14:9: error: a value assimp 5.2.5 cannot read, on a line that fills its buffer: quoting it, "
-              "assimp would read past the buffer");
-    line.pop_back();
-    EXPECT_EQ(ply_error(header + kPlyVertices + line + "\n"), "(no error)");
+    std::string face = "3 0 1 2 x";
+    face += std::string((std::size_t(1) << 20) - 1 - face.size(), 'y');
+    EXPECT_EQ(ply_error(header + kPlyVertices + face + "\n"),
+              "FILE:14:1: error: a PLY line of 1048575 bytes: assimp 5.2.5 would read past its 1 MiB line buffer "
+              "after it");
+}
+
+TEST(PlyLists, DataThatEndsBeforeItsElements) {
+    // Past the file's end assimp reads its last line again for each instance
+    // the header still declares: 1,000 faces of 1,000 indices from one line.
+    std::string many = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                       "property float z\nelement face 1000\nproperty list ushort int vertex_indices\n"
+                       "end_header\n" + kPlyVertices + "1000";
+    for (int i = 0; i < 1000; ++i) many += " 0";
+    EXPECT_EQ(ply_error(many + "\n"),
+              "FILE: error: the PLY data ends 999 element instances before its header says (a truncated file?); "
+              "assimp 5.2.5 would read its last line again for each");
+    // A last line without a line end is read once, as it should be.
+    EXPECT_EQ(ply_error(kTriangleHeader + kPlyVertices + "3 0 1 2"), "(no error)");
 }
 
 // A binary header of exactly `length` bytes: comment lines fill it out.
