@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstring>
 #include <fstream>
-#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -16,9 +14,10 @@ namespace fh {
 
 namespace {
 
-using mesh_text::contains;
 using mesh_text::lowercase;
 using mesh_text::plural;
+using mesh_text::saturating_add;
+using mesh_text::saturating_mul;
 using mesh_text::starts_with;
 
 // At most the first `max_bytes` of the file.
@@ -28,16 +27,6 @@ std::string read_head(const std::string& path, std::size_t max_bytes) {
     in.read(head.data(), static_cast<std::streamsize>(max_bytes));
     head.resize(static_cast<std::size_t>(in.gcount()));
     return head;
-}
-
-std::uint64_t saturating_add(std::uint64_t a, std::uint64_t b) {
-    std::uint64_t r;
-    return __builtin_add_overflow(a, b, &r) ? std::numeric_limits<std::uint64_t>::max() : r;
-}
-
-std::uint64_t saturating_mul(std::uint64_t a, std::uint64_t b) {
-    std::uint64_t r;
-    return __builtin_mul_overflow(a, b, &r) ? std::numeric_limits<std::uint64_t>::max() : r;
 }
 
 // Bytes of one binary PLY value of `type` (1 for a name assimp will reject).

@@ -1,8 +1,10 @@
-// Small text helpers the mesh reader and its header checks share.
+// Small helpers the mesh reader and its checks share: text, and byte
+// counts that saturate rather than wrap.
 #pragma once
 
 #include <cctype>
 #include <cstdint>
+#include <limits>
 #include <string>
 
 namespace fh::mesh_text {
@@ -13,6 +15,16 @@ inline bool contains(const std::string& s, const std::string& part) { return s.f
 
 inline std::string plural(std::uint64_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+inline std::uint64_t saturating_add(std::uint64_t a, std::uint64_t b) {
+    std::uint64_t r;
+    return __builtin_add_overflow(a, b, &r) ? std::numeric_limits<std::uint64_t>::max() : r;
+}
+
+inline std::uint64_t saturating_mul(std::uint64_t a, std::uint64_t b) {
+    std::uint64_t r;
+    return __builtin_mul_overflow(a, b, &r) ? std::numeric_limits<std::uint64_t>::max() : r;
 }
 
 inline std::string lowercase(std::string s) {

@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <fstream>
 #include <iterator>
-#include <limits>
 
 #include "meshes/assimp_replay.h"
 #include "meshes/mesh_text.h"
@@ -17,16 +16,8 @@ namespace {
 using assimp_replay::is_line_end;
 using assimp_replay::strtoul10;
 using mesh_text::plural;
-
-std::uint64_t saturating_add(std::uint64_t a, std::uint64_t b) {
-    std::uint64_t r;
-    return __builtin_add_overflow(a, b, &r) ? std::numeric_limits<std::uint64_t>::max() : r;
-}
-
-std::uint64_t saturating_mul(std::uint64_t a, std::uint64_t b) {
-    std::uint64_t r;
-    return __builtin_mul_overflow(a, b, &r) ? std::numeric_limits<std::uint64_t>::max() : r;
-}
+using mesh_text::saturating_add;
+using mesh_text::saturating_mul;
 
 // ParsingUtils' GetNextLine copies a line into char[BufferSize] and ends it
 // with a zero at the copy's end: at out[4096] for a line this long.
