@@ -38,6 +38,7 @@ struct Folder {
     std::string file;
     std::string problem;
     std::size_t image_bytes = 0;  // decoded so far
+    std::size_t read_bytes = 0;   // read through uris so far
 };
 
 // A uri as a message shows it: at most 60 characters (a data: uri can be
@@ -121,6 +122,13 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
             folder->problem = "'" + shown(name) + "' is " + std::to_string(size) + " bytes (the limit is 1 GiB)";
         return false;
     }
+    if (size > kMaxGltfUriReadBytes - folder->read_bytes) {
+        if (folder->problem.empty())
+            folder->problem = "reading '" + shown(name) + "' would make more than 2 GiB read through uris in all "
+                              "(a file is read again for each image that names it)";
+        return false;
+    }
+    folder->read_bytes += size;
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) {
         if (folder->problem.empty()) folder->problem = "cannot read '" + shown(name) + "' (named by a uri)";
@@ -287,6 +295,36 @@ std::string json_message(const nlohmann::json::exception& e) {
     return what;
 }
 
+// Buffers of at least a byte (tinygltf 2.7 copies a GLB buffer of none
+// from its first byte: an exception of its own, not an error), and images
+// in buffer views that lie inside their buffers: tinygltf hands such an
+// image's bytes to the decoder before any check of ours, from wherever
+// the view says (a view 1 MiB past its buffer crashed the process).
+// The schema has made every index and length a whole number below 2^31.
+void check_buffers_and_image_views(const nlohmann::json& j, const std::string& file) {
+    auto list = [&](const char* key) { return j.contains(key) ? j[key] : nlohmann::json::array(); };
+    const nlohmann::json buffers = list("buffers"), views = list("bufferViews"), images = list("images");
+    for (size_t b = 0; b < buffers.size(); ++b)
+        if (buffers[b]["byteLength"].get<std::uint64_t>() == 0)
+            throw InputError(file, "buffers[" + std::to_string(b) + "].byteLength: must be at least 1, got 0");
+    for (size_t i = 0; i < images.size(); ++i) {
+        if (!images[i].contains("bufferView")) continue;
+        const std::string at = "images[" + std::to_string(i) + "]: ";
+        const std::uint64_t v = images[i]["bufferView"].get<std::uint64_t>();
+        if (v >= views.size()) throw InputError(file, at + "buffer view " + std::to_string(v) + " does not exist");
+        const nlohmann::json& view = views[v];
+        const std::uint64_t b = view["buffer"].get<std::uint64_t>();
+        if (b >= buffers.size()) throw InputError(file, at + "buffer " + std::to_string(b) + " does not exist");
+        const std::uint64_t offset = view.value("byteOffset", std::uint64_t(0));
+        const std::uint64_t length = view["byteLength"].get<std::uint64_t>();
+        const std::uint64_t size = buffers[b]["byteLength"].get<std::uint64_t>();
+        if (offset + length > size)
+            throw InputError(file, at + "buffer view " + std::to_string(v) + " (" + std::to_string(offset) + " + " +
+                                       std::to_string(length) + " bytes) runs past its buffer (" +
+                                       std::to_string(size) + " bytes)");
+    }
+}
+
 // Checks on the JSON before tinygltf reads it: syntax (with its position),
 // nesting, required extensions, uris, and the sizes it asks for.
 void check_json(const std::string& json, const std::string& file) {
@@ -347,6 +385,7 @@ void check_json(const std::string& json, const std::string& file) {
     if (buffer_bytes > double(kMaxGltfBufferBytes))
         throw InputError(file, "buffers of " + std::to_string(std::uint64_t(buffer_bytes)) +
                                    " bytes in all (the limit is 1 GiB)");
+    check_buffers_and_image_views(j, file);
     if (j.contains("nodes") && j["nodes"].is_array() && j["nodes"].size() > kMaxGltfNodes)
         throw InputError(file, std::to_string(j["nodes"].size()) + " nodes (the limit is " +
                                    std::to_string(kMaxGltfNodes) + ")");

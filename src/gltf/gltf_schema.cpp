@@ -10,6 +10,8 @@ namespace {
 
 using json = nlohmann::json;
 
+constexpr std::uint64_t kMaxIndex = 2147483647;
+
 enum class Kind { index, number, string, boolean, object, array, numbers };
 
 struct Field;
@@ -128,6 +130,7 @@ public:
 private:
     void value(const json& v, const Field& f, const std::string& at) const {
         if (!is(v, f.kind)) fail(at + ": expected " + kind_name(f.kind) + ", got " + got(v));
+        if (f.kind == Kind::index) below_2_31(v, at);
         if (f.kind == Kind::object && f.fields) object_of(v, *f.fields, at);
         if (f.kind == Kind::numbers) {
             for (size_t i = 0; i < v.size(); ++i)
@@ -139,8 +142,17 @@ private:
             for (size_t i = 0; i < v.size(); ++i) {
                 const std::string item = at + "[" + std::to_string(i) + "]";
                 if (!is(v[i], f.item)) fail(item + ": expected " + kind_name(f.item) + ", got " + got(v[i]));
+                if (f.item == Kind::index) below_2_31(v[i], item);
                 if (f.item == Kind::object && f.fields) object_of(v[i], *f.fields, item);
             }
+    }
+
+    // tinygltf keeps indices in an int and wraps larger ones
+    // (18446744073709551615 became -1: "no mesh"); no count or length
+    // within the documented limits comes near 2^31 either.
+    void below_2_31(const json& v, const std::string& at) const {
+        if (v.get<std::uint64_t>() > kMaxIndex)
+            fail(at + ": " + got(v) + " is larger than 2147483647, the largest index or length a glTF file may give");
     }
 
     static bool is(const json& v, Kind k) {

@@ -110,6 +110,41 @@ TEST(GltfHostile, BufferViewPastItsBuffer) {
     refused(json, "buffer view 0 (12 + 36 bytes) runs past its buffer (36 bytes)");
 }
 
+TEST(GltfHostile, ImageInABufferViewPastItsBuffer) {
+    // tinygltf hands an image's bytes to the decoder before any check of
+    // ours, from wherever its view says: 1 MiB past the buffer crashed.
+    const std::string png16 = R"({"uri": "data:application/octet-stream;base64,iVBORw0KGgoAAAAAAAAAAA==", "byteLength": 16})";
+    auto image_in = [&](const std::string& view) {
+        return R"({"asset": {"version": "2.0"}, "buffers": [)" + png16 + R"(], "bufferViews": [)" + view +
+               R"(], "images": [{"bufferView": 0, "mimeType": "image/png"}]})";
+    };
+    refused(image_in(R"({"buffer": 0, "byteOffset": 4096, "byteLength": 64})"),
+            "images[0]: buffer view 0 (4096 + 64 bytes) runs past its buffer (16 bytes)");
+    refused(image_in(R"({"buffer": 0, "byteLength": 17})"),
+            "images[0]: buffer view 0 (0 + 17 bytes) runs past its buffer (16 bytes)");
+    refused(image_in(R"({"buffer": 1, "byteLength": 16})"), "images[0]: buffer 1 does not exist");
+    std::string no_view = image_in(R"({"buffer": 0, "byteLength": 16})");
+    no_view.replace(no_view.find("\"bufferView\": 0"), 15, "\"bufferView\": 1");
+    refused(no_view, "images[0]: buffer view 1 does not exist");
+}
+
+TEST(GltfHostile, BufferOfNoBytes) {
+    // tinygltf 2.7 copies a GLB buffer of none from its first byte: an
+    // exception of the standard library's, not one line saying why.
+    refused(R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 0}]})",
+            "buffers[0].byteLength: must be at least 1, got 0");
+}
+
+TEST(GltfHostile, IndexPastWhatTinygltfKeeps) {
+    // tinygltf keeps indices in an int: 2^64 - 1 became -1, "no mesh", and
+    // the file loaded.
+    refused(R"({"asset": {"version": "2.0"}, "nodes": [{"mesh": 18446744073709551615}]})",
+            "nodes[0].mesh: 18446744073709551615 is larger than 2147483647, the largest index or length a glTF "
+            "file may give");
+    refused(R"({"asset": {"version": "2.0"}, "scenes": [{"nodes": [2147483648]}]})",
+            "scenes[0].nodes[0]: 2147483648 is larger than 2147483647");
+}
+
 TEST(GltfHostile, IndexOutOfRange) {
     Bin bin;
     const int p = bin.f32({0, 0, 0, 1, 0, 0, 0, 1, 0}), i = bin.u16({0, 1, 3});
@@ -127,13 +162,14 @@ TEST(GltfHostile, SparseIndicesOutOfOrder) {
 }
 
 TEST(GltfHostile, CountPastTheLimitIsRefusedBeforeAllocating) {
-    // 3,999,999,999 positions (a multiple of 3) claimed over a view of 36
-    // bytes: 96 GB as doubles, were it read. The child may grow 256 MiB.
+    // 1,999,999,998 positions (a multiple of 3) claimed over a view of 36
+    // bytes: 48 GB as doubles, were it read. The child may grow 256 MiB.
+    // (A count of 2^31 or more the schema refuses: tinygltf keeps it in an int.)
     Bin bin;
     const int view = bin.f32({0, 0, 0, 1, 0, 0, 0, 1, 0});
     refused_in_bounded_memory(
-        one_mesh(bin, R"({"attributes": {"POSITION": 0}})", accessor(view, kFloat, 3999999999u, "VEC3")),
-        "bad.gltf: error: mesh 0 primitive 0 POSITION (accessor 0): 3999999999 elements of 3 numbers are more than "
+        one_mesh(bin, R"({"attributes": {"POSITION": 0}})", accessor(view, kFloat, 1999999998u, "VEC3")),
+        "bad.gltf: error: mesh 0 primitive 0 POSITION (accessor 0): 1999999998 elements of 3 numbers are more than "
         "one accessor may hold (67108864 numbers)");
 }
 
