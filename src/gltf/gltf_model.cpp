@@ -13,6 +13,7 @@
 #include <filesystem>
 
 #include "gltf/gltf_schema.h"
+#include "gltf/image_checks.h"
 #include "text/input_error.h"
 
 namespace fh {
@@ -180,6 +181,11 @@ bool decode_image(tinygltf::Image* image, const int index, std::string*, std::st
         };
         if (too_large(be32(16), be32(20))) return refuse_size(be32(16), be32(20));
     }
+    // What Debian's stb_image 2.27 would read past its tables or out of
+    // uninitialised memory, or inflate without bound (gltf/image_checks.h).
+    if (const std::string why = png ? png_problem(bytes, std::size_t(size)) : jpeg_problem(bytes, std::size_t(size));
+        !why.empty())
+        return refuse(why);
     int w = 0, h = 0, channels = 0;
     if (!stbi_info_from_memory(bytes, size, &w, &h, &channels))
         return refuse(std::string("cannot be decoded (stb_image: ") + stbi_failure_reason() + ")");
