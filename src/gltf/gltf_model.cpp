@@ -308,8 +308,10 @@ std::string json_message(const nlohmann::json::exception& e) {
 // the view says (a view 1 MiB past its buffer crashed the process).
 // The schema has made every index and length a whole number below 2^31.
 void check_buffers_and_image_views(const nlohmann::json& j, const std::string& file) {
-    auto list = [&](const char* key) { return j.contains(key) ? j[key] : nlohmann::json::array(); };
-    const nlohmann::json buffers = list("buffers"), views = list("bufferViews"), images = list("images");
+    static const nlohmann::json kNone = nlohmann::json::array();
+    // By reference: a buffer's data: uri may be most of a 1 GiB file.
+    auto list = [&](const char* key) -> const nlohmann::json& { return j.contains(key) ? j.at(key) : kNone; };
+    const nlohmann::json &buffers = list("buffers"), &views = list("bufferViews"), &images = list("images");
     for (size_t b = 0; b < buffers.size(); ++b)
         if (buffers[b]["byteLength"].get<std::uint64_t>() == 0)
             throw InputError(file, "buffers[" + std::to_string(b) + "].byteLength: must be at least 1, got 0");

@@ -118,7 +118,6 @@ public:
     bool copied() const { return copied_; }  // the last get_next_line wrote into the buffer
     std::size_t line_length() const { return length_; }  // the bytes it copied, before its '\n'
 
-
 private:
     char cache(std::size_t i) const {
         if (i >= cache_.size()) throw PastTheBuffer{};

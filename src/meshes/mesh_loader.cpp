@@ -46,10 +46,9 @@
 //     crash): refused by the same walk.
 //   - its OBJ importer writes past its vertex array for a line statement of
 //     one vertex (heap corruption; fixed in 5.3.0), reads past its line
-//     buffer for a vertical tab or a vertex of four indices in a face,
-//     line or point statement, and past its 16 MiB
-//     cache for a "\" before a line end at a block's end: refused first
-//     (src/meshes/obj_lines.h).
+//     buffer for a vertical tab or a vertex of four indices in a face, line
+//     or point statement, and past its 16 MiB cache for a "\" before a line
+//     end at a block's end: refused first (src/meshes/obj_lines.h).
 //   - a PLY face of 6 to 8 texture coordinates has them read through the
 //     vertex index of each two, past the indices of a triangle; a line of
 //     1 MiB - 1 bytes fills its line buffer, and the parser reads past it;
