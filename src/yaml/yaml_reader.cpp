@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <unordered_map>
+#include <vector>
 
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
@@ -69,7 +71,14 @@ std::string char_at(const std::string& text, const YAML::Mark& mark) {
 
 // Follows the parser's events and refuses maps and lists nested deeper than
 // kMaxYamlNesting as soon as the first one opens, so the recursive parser
-// never goes deeper either. Aliases are not expanded.
+// never goes deeper either. Aliases count as what they stand for: yaml-cpp
+// shares an aliased node, but the readers walk it once for each alias --
+// ten groups of ten aliases of the group before describe 10^10 spheres in
+// a kilobyte, and a group that held an alias of itself (yaml-cpp records
+// the anchor as the group opens) made the surface reader recurse until the
+// stack ran out. So an alias inside what it names is refused, an alias
+// adds its anchor's depth to where it stands, and all aliases together may
+// stand for at most kMaxAliasedValues values.
 class NestingCheck : public YAML::EventHandler {
 public:
     explicit NestingCheck(const std::string& file) : file_(file) {}
@@ -77,36 +86,120 @@ public:
     YAML::Mark document_start() const { return document_start_; }
 
     void OnDocumentStart(const YAML::Mark& mark) override {
-        depth_ = 0;
+        open_.clear();
         document_start_ = mark;
     }
     void OnDocumentEnd() override {}
-    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
-    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
-    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
-    void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+    void OnNull(const YAML::Mark&, YAML::anchor_t anchor) override { value(anchor); }
+    void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
+        const auto it = anchors_.find(anchor);
+        if (it == anchors_.end()) return;  // yaml-cpp refuses it
+        if (it->second.values == kOpen) refuse(mark, "an alias inside the map or list it names");
+        if (int(open_.size()) + it->second.height > kMaxYamlNesting) refuse(mark, too_deep());
+        aliased_ = std::min(kMaxAliasedValues + 1, aliased_ + std::min(kMaxAliasedValues, it->second.values));
+        if (aliased_ > kMaxAliasedValues)
+            refuse(mark, "aliases standing for more than " + std::to_string(kMaxAliasedValues) +
+                             " values in all (each alias is read as a copy)");
+        add(it->second.values, it->second.height);
+    }
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t anchor, const std::string&) override {
+        value(anchor);
+    }
+    void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
                          YAML::EmitterStyle::value) override {
-        open(mark);
+        open(mark, anchor);
     }
-    void OnSequenceEnd() override { --depth_; }
-    void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
-        open(mark);
+    void OnSequenceEnd() override { close(); }
+    void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
+                    YAML::EmitterStyle::value) override {
+        open(mark, anchor);
     }
-    void OnMapEnd() override { --depth_; }
+    void OnMapEnd() override { close(); }
 
 private:
-    void open(const YAML::Mark& mark) {
-        if (++depth_ <= kMaxYamlNesting) return;
-        const std::string message =
-            "maps and lists nested more than " + std::to_string(kMaxYamlNesting) + " levels deep";
+    static constexpr std::uint64_t kMaxAliasedValues = 1'000'000;
+    static constexpr std::uint64_t kOpen = ~std::uint64_t(0);
+    struct Size {
+        std::uint64_t values = 1;  // itself and all inside it, aliases as what they stand for
+        int height = 0;            // levels of maps and lists, itself included
+    };
+    struct Open {
+        YAML::anchor_t anchor;
+        Size size;
+    };
+
+    std::string too_deep() const {
+        return "maps and lists nested more than " + std::to_string(kMaxYamlNesting) + " levels deep";
+    }
+    [[noreturn]] void refuse(const YAML::Mark& mark, const std::string& message) const {
         if (mark.is_null()) throw InputError(file_, message);
         throw InputError(file_, mark.line + 1, mark.column + 1, message);
     }
+    void add(std::uint64_t values, int height) {
+        if (open_.empty()) return;
+        Size& s = open_.back().size;
+        s.values = std::min(kOpen - 1, s.values + values);
+        s.height = std::max(s.height, height + 1);
+    }
+    void value(YAML::anchor_t anchor) {
+        if (anchor != YAML::NullAnchor) anchors_[anchor] = Size{1, 0};
+        add(1, 0);
+    }
+    void open(const YAML::Mark& mark, YAML::anchor_t anchor) {
+        if (int(open_.size()) + 1 > kMaxYamlNesting) refuse(mark, too_deep());
+        if (anchor != YAML::NullAnchor) anchors_[anchor] = Size{kOpen, 0};
+        open_.push_back({anchor, Size{1, 1}});
+    }
+    void close() {
+        const Open done = open_.back();
+        open_.pop_back();
+        if (done.anchor != YAML::NullAnchor) anchors_[done.anchor] = done.size;
+        add(done.size.values, done.size.height);
+    }
 
     const std::string& file_;
-    int depth_ = 0;
+    std::vector<Open> open_;
+    std::unordered_map<YAML::anchor_t, Size> anchors_;
+    std::uint64_t aliased_ = 0;
     YAML::Mark document_start_ = YAML::Mark::null_mark();
 };
+
+// yaml-cpp's scanner turns the whole text into tokens before the parser
+// sees the first event when a flow list or map opens and never closes: 240
+// bytes a '[' (16 MiB of them: 28 s and 4 GB before the nesting check above
+// could refuse them). So flow brackets are counted first, outside quotes
+// and comments, against the same limit, the file's top-level map its first
+// level, as the check above counts; '[' and '{' inside a plain value count
+// too (64 of them open at once is no scene).
+void check_flow_nesting(const std::string& file, const std::string& text) {
+    int depth = 0, line = 1, column = 0;
+    char quote = 0;
+    bool comment = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        ++column;
+        if (c == '\n') {
+            ++line, column = 0, comment = false;
+            continue;
+        }
+        if (comment) continue;
+        if (quote) {
+            if (c == '\\' && quote == '"') ++i, ++column;  // an escape in double quotes
+            else if (c == quote) quote = 0;
+            continue;
+        }
+        // A quote opens a quoted value only where a value starts.
+        const char before = i == 0 ? '\n' : text[i - 1];
+        const bool blank = before == ' ' || before == '\t' || before == '\n' || before == '\r';
+        const bool starts = blank || before == '[' || before == '{' || before == ',' || before == ':' || before == '-';
+        if ((c == '"' || c == '\'') && starts) quote = c;
+        else if (c == '#' && blank) comment = true;
+        else if ((c == '[' || c == '{') && 1 + ++depth > kMaxYamlNesting)
+            throw InputError(file, line, column,
+                             "maps and lists nested more than " + std::to_string(kMaxYamlNesting) + " levels deep");
+        else if ((c == ']' || c == '}') && depth > 0) --depth;
+    }
+}
 
 // " (HINT)" when yaml/yaml_hints.h finds a common mistake behind yaml-cpp's
 // error `yaml_message` at `mark` of `text`, else "": yaml-cpp's words ("end of
@@ -162,7 +255,8 @@ YAML::Node YamlReader::parse_map(const std::string& text, const std::string& wha
     check_input_text(file_, text);
     YAML::Node root;
     try {
-        check_structure(file_, text);  // first: nesting, at most one document
+        check_flow_nesting(file_, text);
+        check_structure(file_, text);  // first: nesting, at most one document, aliases
         root = YAML::Load(text);
     } catch (const YAML::Exception& e) {
         throw yaml_error(file_, e, &text);

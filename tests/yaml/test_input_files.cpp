@@ -119,6 +119,34 @@ TEST(InputFiles, NestingUpToTheLimitIsParsed) {
               "FILE:1:67: error: maps and lists nested more than 64 levels deep");
 }
 
+TEST(InputFiles, FlowListsThatNeverCloseAreRefusedBeforeYamlCppScansThem) {
+    // yaml-cpp scanned all of an unclosed flow list into tokens before the
+    // nesting check saw its first event: 16 MiB of '[' took 28 s and 4 GB (15 MiB here: the limit is 16).
+    EXPECT_EQ(input_error("surfaces: " + std::string(std::size_t(15) << 20, '[') + "\n"),
+              "FILE:1:74: error: maps and lists nested more than 64 levels deep");
+    // Brackets in quotes and comments are text, not lists.
+    EXPECT_EQ(input_error("# " + std::string(100, '[') + "\nx: '" + std::string(100, '{') + "'\n"),
+              "FILE:2:1: error: unknown key 'x' in scene");
+    EXPECT_EQ(input_error("x: \"" + std::string(100, '[') + "\\\"\"\n"), "FILE:1:1: error: unknown key 'x' in scene");
+}
+
+TEST(InputFiles, AliasesCountAsWhatTheyStandFor) {
+    // yaml-cpp shares an aliased node, but the readers walk it once for each
+    // alias. A group holding an alias of itself recursed until the stack ran
+    // out (a crash); a chain of groups each holding the one before nests as
+    // deep as the chain is long.
+    EXPECT_EQ(input_error(kInputCamera + "surfaces:\n  - &g {type: group, surfaces: [*g]}\n"),
+              "FILE:5:33: error: an alias inside the map or list it names");
+    std::string chain = kInputCamera + "surfaces:\n  - &g0 {type: sphere, center: [0, 0, 0], radius: 1}\n";
+    for (int i = 1; i < 100; ++i)
+        chain += "  - &g" + std::to_string(i) + " {type: group, surfaces: [*g" + std::to_string(i - 1) + "]}\n";
+    // g_i is 2 i + 2 levels deep; its alias stands 4 levels down: g30's is the 65th.
+    EXPECT_EQ(input_error(chain), "FILE:36:35: error: maps and lists nested more than 64 levels deep");
+    // Aliases of a colour or a list of keys read as copies would.
+    EXPECT_EQ(input_error(kInputCamera + "a: &v [1, 2, 3]\nb: *v\nc: &n 3\nd: *n\n"),
+              "FILE:4:1: error: unknown key 'a' in scene");
+}
+
 TEST(InputFiles, SeveralDocuments) {
     EXPECT_EQ(input_error(kInputCamera + "---\n" + kInputCamera), "FILE:4:1: error: expected a single yaml document");
     EXPECT_EQ(input_error(kInputCamera + "---\n"), "FILE:4:1: error: expected a single yaml document");
@@ -133,7 +161,9 @@ TEST(InputFiles, AliasesAreNotExpanded) {
         for (int k = 1; k < 10; ++k) text += ", " + prev;
         text += "]\n";
     }
-    EXPECT_EQ(input_error(text), "FILE:1:1: error: unknown key 'a0' in scene");
+    // a_k stands for about 11 x 10^k values: the eighth alias of a4 passes a million.
+    EXPECT_EQ(input_error(text),
+              "FILE:6:45: error: aliases standing for more than 1000000 values in all (each alias is read as a copy)");
 }
 
 TEST(InputFiles, MessagesAreOneShortLine) {
