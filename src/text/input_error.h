@@ -10,26 +10,46 @@
 
 namespace fh {
 
+// The bytes of the UTF-8 character at text[i] (a lead byte and its
+// continuation bytes), or 0 where none starts.
+inline std::size_t utf8_character(const std::string& text, std::size_t i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const std::size_t n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+    if (n == 0 || i + n > text.size()) return 0;
+    for (std::size_t k = 1; k < n; ++k)
+        if ((static_cast<unsigned char>(text[i + k]) & 0xc0) != 0x80) return 0;
+    return n;
+}
+
 // `text` made safe for one line on a terminal: control characters (C0, DEL
-// and C1, so also newlines) become \xNN, and past `max_bytes` it is cut, on
-// a character boundary, and ends in "...". Messages quote values from files,
-// which may be long or hold escapes like "\n".
+// and C1, so also newlines) and bytes that are not UTF-8 become \xNN, and
+// past `max_bytes` it is cut, on a character boundary, and ends in "...".
+// Messages quote values from files, which may be long or hold escapes like
+// "\n" (and yaml-cpp 0.7 turns "\N" into the lone byte 0x85).
 inline std::string printable(const std::string& text, std::size_t max_bytes = 400) {
     static const char hex[] = "0123456789abcdef";
     std::string out;
+    auto escape = [&](unsigned char code) {
+        out += "\\x";
+        out += hex[code >> 4];
+        out += hex[code & 15];
+    };
     for (std::size_t i = 0; i < text.size(); ++i) {
+        if (out.size() >= max_bytes) return out + "...";
         const auto c = static_cast<unsigned char>(text[i]);
-        const bool c1 = c == 0xc2 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) >= 0x80 &&
-                        static_cast<unsigned char>(text[i + 1]) <= 0x9f;
-        // A character starts at any byte but a UTF-8 continuation byte.
-        if ((c & 0xc0) != 0x80 && out.size() >= max_bytes) return out + "...";
-        if (c < 0x20 || c == 0x7f || c1) {
-            const auto code = c1 ? static_cast<unsigned char>(text[++i]) : c;
-            out += "\\x";
-            out += hex[code >> 4];
-            out += hex[code & 15];
+        if (c < 0x80) {
+            if (c < 0x20 || c == 0x7f) escape(c);
+            else out += static_cast<char>(c);
+            continue;
+        }
+        const std::size_t n = utf8_character(text, i);
+        if (n == 0) {
+            escape(c);
+        } else if (c == 0xc2 && static_cast<unsigned char>(text[i + 1]) <= 0x9f) {
+            escape(static_cast<unsigned char>(text[++i]));  // a C1 control character
         } else {
-            out += static_cast<char>(c);
+            out.append(text, i, n);
+            i += n - 1;
         }
     }
     return out;
