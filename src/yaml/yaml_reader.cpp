@@ -151,6 +151,7 @@ private:
         open_.push_back({anchor, Size{1, 1}});
     }
     void close() {
+        if (open_.empty()) return;  // (yaml-cpp's events are balanced)
         const Open done = open_.back();
         open_.pop_back();
         if (done.anchor != YAML::NullAnchor) anchors_[done.anchor] = done.size;
