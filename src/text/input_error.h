@@ -8,18 +8,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace fh {
+#include "text/utf8.h"
 
-// The bytes of the UTF-8 character at text[i] (a lead byte and its
-// continuation bytes), or 0 where none starts.
-inline std::size_t utf8_character(const std::string& text, std::size_t i) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    const std::size_t n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
-    if (n == 0 || i + n > text.size()) return 0;
-    for (std::size_t k = 1; k < n; ++k)
-        if ((static_cast<unsigned char>(text[i + k]) & 0xc0) != 0x80) return 0;
-    return n;
-}
+namespace fh {
 
 // `text` made safe for one line on a terminal: control characters (C0, DEL
 // and C1, so also newlines) and bytes that are not UTF-8 become \xNN, and
@@ -42,10 +33,10 @@ inline std::string printable(const std::string& text, std::size_t max_bytes = 40
             else out += static_cast<char>(c);
             continue;
         }
-        const std::size_t n = utf8_character(text, i);
+        const std::size_t n = utf8_sequence(text, i);
         if (n == 0) {
             escape(c);
-        } else if (c == 0xc2 && static_cast<unsigned char>(text[i + 1]) <= 0x9f) {
+        } else if (utf8_c1_control(text, i)) {
             escape(static_cast<unsigned char>(text[++i]));  // a C1 control character
         } else {
             out.append(text, i, n);

@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 
 #include "text/input_error.h"
+#include "text/utf8.h"
 
 namespace fh {
 
@@ -34,21 +35,8 @@ InputError too_large(const std::string& file, std::size_t size, std::size_t max_
 }  // namespace
 
 std::size_t utf8_length(const std::string& text, std::size_t i) {
-    const auto byte = [&](std::size_t k) { return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u; };
-    const unsigned c = byte(i);
-    const auto cont = [&](std::size_t k, unsigned lo = 0x80, unsigned hi = 0xbf) {
-        return byte(k) >= lo && byte(k) <= hi;
-    };
-    if (c < 0x80) return 1;
-    if (c == 0xc2) return (cont(i + 1, 0xa0) || byte(i + 1) == 0x85) ? 2 : 0;
-    if (c >= 0xc3 && c <= 0xdf) return cont(i + 1) ? 2 : 0;
-    if (c == 0xe0) return cont(i + 1, 0xa0) && cont(i + 2) ? 3 : 0;
-    if (c == 0xed) return cont(i + 1, 0x80, 0x9f) && cont(i + 2) ? 3 : 0;
-    if (c >= 0xe1 && c <= 0xef) return cont(i + 1) && cont(i + 2) ? 3 : 0;
-    if (c == 0xf0) return cont(i + 1, 0x90) && cont(i + 2) && cont(i + 3) ? 4 : 0;
-    if (c >= 0xf1 && c <= 0xf3) return cont(i + 1) && cont(i + 2) && cont(i + 3) ? 4 : 0;
-    if (c == 0xf4) return cont(i + 1, 0x80, 0x8f) && cont(i + 2) && cont(i + 3) ? 4 : 0;
-    return 0;
+    if (utf8_c1_control(text, i) && static_cast<unsigned char>(text[i + 1]) != 0x85) return 0;
+    return utf8_sequence(text, i);
 }
 
 void check_input_text(const std::string& file, const std::string& text, std::size_t max_bytes) {
