@@ -175,11 +175,8 @@ bool decode_image(tinygltf::Image* image, const int index, std::string*, std::st
     // A PNG's size straight from its IHDR: stb_image refuses some large
     // headers itself with a vaguer reason ("unknown image type").
     if (png && size >= 24) {
-        auto be32 = [&](int at) {
-            return std::uint64_t(bytes[at]) << 24 | std::uint64_t(bytes[at + 1]) << 16 |
-                   std::uint64_t(bytes[at + 2]) << 8 | std::uint64_t(bytes[at + 3]);
-        };
-        if (too_large(be32(16), be32(20))) return refuse_size(be32(16), be32(20));
+        const std::uint64_t w = big_endian_u32(bytes + 16), h = big_endian_u32(bytes + 20);
+        if (too_large(w, h)) return refuse_size(w, h);
     }
     // What Debian's stb_image 2.27 would read past its tables or out of
     // uninitialised memory, or inflate without bound (gltf/image_checks.h).

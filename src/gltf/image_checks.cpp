@@ -10,10 +10,6 @@ namespace fh {
 
 namespace {
 
-std::uint32_t be32(const unsigned char* p) {
-    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
-}
-
 // The bytes a PNG's filtered rows take: one filter byte a row, each of the
 // seven Adam7 passes its own rows when interlaced. 0 for a header stb
 // refuses itself.
@@ -46,12 +42,12 @@ std::string png_problem(const unsigned char* bytes, std::size_t size) {
     std::string why;
     // The chunks, from after the signature, until one is cut short.
     for (std::size_t at = 8; why.empty() && !ended && at + 12 <= size;) {
-        const std::uint32_t length = be32(bytes + at);
+        const std::uint32_t length = big_endian_u32(bytes + at);
         if (length > size - at - 12) break;
         const unsigned char* type = bytes + at + 4;
         const unsigned char* data = bytes + at + 8;
         if (std::memcmp(type, "IHDR", 4) == 0 && length >= 13)
-            expected = png_raw_bytes(be32(data), be32(data + 4), data[8], data[9], data[12]);
+            expected = png_raw_bytes(big_endian_u32(data), big_endian_u32(data + 4), data[8], data[9], data[12]);
         if (std::memcmp(type, "IEND", 4) == 0) break;
         if (std::memcmp(type, "IDAT", 4) == 0) {
             if (expected == 0) break;  // no header stb reads: its to refuse

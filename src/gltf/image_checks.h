@@ -13,9 +13,15 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace fh {
+
+// The unsigned 32-bit number PNG's chunks store at p, most significant byte first.
+inline std::uint32_t big_endian_u32(const unsigned char* p) {
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+}
 
 // Empty when stb_image may decode these bytes, else why not. Only what the
 // checks above look for: anything else wrong is left to stb_image to refuse.
