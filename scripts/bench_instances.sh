@@ -36,7 +36,10 @@ peak() { /usr/bin/time -f %M -o "$work/peak" "$@" >"$work/stdout" 2>"$work/stder
     row=$(awk -F': ' -v n="$n" -v peak="$(cat "$work/peak")" '{v[$1] = $2}
       END {printf "%s,%d,%.1f,%.1f,%.2f,%.0f", n, 75408 * n, v["load_ms"], v["prepare_ms"], v["ms_per_frame"], peak / 1024}' "$work/stdout")
     if [[ -x $embree ]]; then
-      peak "$embree" --threads 2 --runs "$runs" --placements "$work/grid_$n.csv"
+      # The bunny the grid's scene places (fetched into this tree), whichever
+      # tree the peer was built in.
+      peak "$embree" --threads 2 --runs "$runs" --bunny "$here/../animations/meshes/bunny00.off" \
+        --placements "$work/grid_$n.csv"
       row+=$(awk -F, -v peak="$(cat "$work/peak")" 'NR == 2 {printf ",%.1f,%.2f,%.0f", $3, $4, peak / 1024}' "$work/stdout")
     else
       row+=",,,"
