@@ -16,7 +16,8 @@ cmake --build . --target firsthit_bench -j "$(nproc)" >/dev/null
 # the window's.
 ctest --output-on-failure -R '^(slurm|view)\.' >ctest-scripts.log 2>&1 &
 scripts=$!
-bash "$here/scripts/test_shards.sh" tests/firsthit_tests test-logs
+# (On a failure, the scripts' tests end first: no Slurm daemons left behind.)
+bash "$here/scripts/test_shards.sh" tests/firsthit_tests test-logs || { wait "$scripts" || true; exit 1; }
 if ! wait "$scripts"; then cat ctest-scripts.log >&2; exit 1; fi
 grep -E "tests passed|skipped" ctest-scripts.log | sed 's/^/test: the scripts: /' || true
 # The same tests again through each lower x86-64 level this CPU runs, forced

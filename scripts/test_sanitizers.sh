@@ -21,6 +21,6 @@ export UBSAN_OPTIONS="print_stacktrace=1 halt_on_error=1 ${UBSAN_OPTIONS:-}"
 # beside it.
 (cd "$build" && ctest --output-on-failure -R '^view\.' >ctest-scripts.log 2>&1) &
 window=$!
-bash "$here/scripts/test_shards.sh" "$build/tests/firsthit_tests" "$build/test-logs"
+bash "$here/scripts/test_shards.sh" "$build/tests/firsthit_tests" "$build/test-logs" || { wait "$window" || true; exit 1; }
 if ! wait "$window"; then cat "$build/ctest-scripts.log" >&2; exit 1; fi
 echo "test_sanitizers: no memory error or undefined behaviour found"
