@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Sets up a fresh Debian 12 machine: installs what is missing (apt-get) and
-# configures and builds firsthit in build/ (Release): one binary that runs
+# configures build/ (Release) and builds firsthit there: one binary that runs
 # on any x86-64 CPU at its widest SIMD (the tracer built for x86-64-v2, v3
 # and v4, chosen at start-up). FIRSTHIT_ARCH=host (or native, x86-64-vN)
 # bash scripts/setup.sh builds for one CPU only.
@@ -31,5 +31,8 @@ if [[ ${#missing[@]} -gt 0 ]]; then
 fi
 
 cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release -DFIRSTHIT_ARCH="${FIRSTHIT_ARCH:-dispatch}" >/dev/null
-cmake --build "$here/build" -j "$(nproc)"
+# The program alone: the tests, the Embree peer and the benchmarks are
+# built when asked for (scripts/test.sh, make bench-...), which spares a
+# first `make movies` about a quarter of the compiling.
+cmake --build "$here/build" -j "$(nproc)" --target firsthit
 echo "setup: built $here/build/firsthit"

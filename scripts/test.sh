@@ -7,9 +7,10 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/scripts/setup.sh"
 cd "$here/build"
-# The micro-benchmarks are built only when asked for (bench/CMakeLists.txt):
+# Everything else: the tests, the Embree peer, the benchmarks; and the
+# micro-benchmarks, built only when asked for (bench/CMakeLists.txt):
 # compiled here, not run, so that they keep up with the tracer.
-cmake --build . --target firsthit_bench -j "$(nproc)" >/dev/null
+cmake --build . --target all firsthit_bench -j "$(nproc)"
 # The GoogleTest binary in shards (scripts/test_shards.sh: a few processes
 # rather than one per test), and beside it CTest's two tests that are
 # scripts, which spend most of their time waiting: the Slurm cluster's and
