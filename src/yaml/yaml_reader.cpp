@@ -69,6 +69,11 @@ std::string char_at(const std::string& text, const YAML::Mark& mark) {
     return text.substr(i, std::max<std::size_t>(1, utf8_length(text, i)));
 }
 
+// What both nesting checks below say.
+std::string too_deep_message() {
+    return "maps and lists nested more than " + std::to_string(kMaxYamlNesting) + " levels deep";
+}
+
 // Follows the parser's events and refuses maps and lists nested deeper than
 // kMaxYamlNesting as soon as the first one opens, so the recursive parser
 // never goes deeper either. Aliases count as what they stand for: yaml-cpp
@@ -95,8 +100,8 @@ public:
         const auto it = anchors_.find(anchor);
         if (it == anchors_.end()) return;  // yaml-cpp refuses it
         if (it->second.values == kOpen) refuse(mark, "an alias inside the map or list it names");
-        if (int(open_.size()) + it->second.height > kMaxYamlNesting) refuse(mark, too_deep());
-        aliased_ = std::min(kMaxAliasedValues + 1, aliased_ + std::min(kMaxAliasedValues, it->second.values));
+        if (int(open_.size()) + it->second.height > kMaxYamlNesting) refuse(mark, too_deep_message());
+        aliased_ += std::min(kMaxAliasedValues + 1, it->second.values);  // at most the limit before: no overflow
         if (aliased_ > kMaxAliasedValues)
             refuse(mark, "aliases standing for more than " + std::to_string(kMaxAliasedValues) +
                              " values in all (each alias is read as a copy)");
@@ -128,9 +133,6 @@ private:
         Size size;
     };
 
-    std::string too_deep() const {
-        return "maps and lists nested more than " + std::to_string(kMaxYamlNesting) + " levels deep";
-    }
     [[noreturn]] void refuse(const YAML::Mark& mark, const std::string& message) const {
         if (mark.is_null()) throw InputError(file_, message);
         throw InputError(file_, mark.line + 1, mark.column + 1, message);
@@ -146,7 +148,7 @@ private:
         add(1, 0);
     }
     void open(const YAML::Mark& mark, YAML::anchor_t anchor) {
-        if (int(open_.size()) + 1 > kMaxYamlNesting) refuse(mark, too_deep());
+        if (int(open_.size()) + 1 > kMaxYamlNesting) refuse(mark, too_deep_message());
         if (anchor != YAML::NullAnchor) anchors_[anchor] = Size{kOpen, 0};
         open_.push_back({anchor, Size{1, 1}});
     }
@@ -196,8 +198,7 @@ void check_flow_nesting(const std::string& file, const std::string& text) {
         if ((c == '"' || c == '\'') && starts) quote = c;
         else if (c == '#' && blank) comment = true;
         else if ((c == '[' || c == '{') && 1 + ++depth > kMaxYamlNesting)
-            throw InputError(file, line, column,
-                             "maps and lists nested more than " + std::to_string(kMaxYamlNesting) + " levels deep");
+            throw InputError(file, line, column, too_deep_message());
         else if ((c == ']' || c == '}') && depth > 0) --depth;
     }
 }

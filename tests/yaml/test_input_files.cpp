@@ -171,7 +171,7 @@ TEST(InputFiles, SeveralDocuments) {
     EXPECT_EQ(input_error(kInputCamera + "---\n"), "FILE:4:1: error: expected a single yaml document");
 }
 
-TEST(InputFiles, AliasesAreNotExpanded) {
+TEST(InputFiles, AliasesOfAliasesAreCountedNotExpanded) {
     // A "billion laughs": each level refers to the one before ten times.
     std::string text = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
     for (int i = 1; i < 30; ++i) {
