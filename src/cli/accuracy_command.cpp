@@ -4,7 +4,6 @@
 // the reference per setting, as a CSV and a plot.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -12,6 +11,9 @@
 
 #include "cli/commands.h"
 #include "cli/job.h"
+#include "files/atomic_file.h"
+#include "files/file_names.h"
+#include "files/input_files.h"
 #include "text/input_error.h"
 #include "render/accuracy_sweep.h"
 
@@ -75,10 +77,25 @@ unset multiplot
                                  " (is it installed? apt-get install gnuplot-nox)");
 }
 
+// --csv OUT.csv and --plot OUT.png, checked before the sweep's minutes of
+// rendering: the right extensions, places that can be written, and (once the
+// scene is read) none of its files.
+void check_outputs(const Args& args) {
+    const auto csv = args.value("--csv"), png = args.value("--plot");
+    if (png && !csv) throw UsageError("--plot needs --csv (gnuplot reads the table from it)");
+    if (csv && lowercase_extension(*csv) != ".csv") throw UsageError("--csv " + *csv + ": the table's name must end in .csv");
+    if (png && lowercase_extension(*png) != ".png") throw UsageError("--plot " + *png + ": the plot's name must end in .png");
+    for (const auto& out : {csv, png})
+        if (out) check_output_file(*out);
+}
+
 }  // namespace
 
 int run_accuracy(const Args& args) {
+    check_outputs(args);
     const Job job = job_from_args(args);
+    for (const auto& out : {args.value("--csv"), args.value("--plot")})
+        if (out) check_not_an_input(*out);
     AccuracyOptions options;
     options.runs = args.integer("--runs", 3, 1, 1000);
     options.reference_spp = args.integer("--reference-spp", 256, 1, Limits::max_samples_per_pixel);
@@ -100,18 +117,27 @@ int run_accuracy(const Args& args) {
 
     const auto csv = args.value("--csv");
     if (csv) {
-        std::ofstream out(*csv + ".tmp");
-        write_csv(out, rows);
-        out.close();
-        if (!out || std::rename((*csv + ".tmp").c_str(), csv->c_str()) != 0)
-            throw std::runtime_error("cannot write " + *csv);
+        std::ostringstream table;
+        write_csv(table, rows);
+        const std::string text = table.str();
+        write_file_atomic(*csv, std::vector<std::uint8_t>(text.begin(), text.end()));
     } else {
         write_csv(std::cout, rows);
     }
     if (const auto png = args.value("--plot")) {
-        if (!csv) throw UsageError("--plot needs --csv (gnuplot reads the table from it)");
         std::string title = job.file + (job.frame >= 0 ? " frame " + std::to_string(job.frame) : "");
-        plot(*csv, *png, "What accuracy costs: " + title);
+        // gnuplot writes as it goes: to a temporary, renamed once whole.
+        const std::string part = temporary_name(*png, 0);
+        try {
+            plot(*csv, part, "What accuracy costs: " + title);
+        } catch (...) {
+            std::remove(part.c_str());
+            throw;
+        }
+        if (std::rename(part.c_str(), png->c_str()) != 0) {
+            std::remove(part.c_str());
+            throw std::runtime_error("cannot write " + *png);
+        }
     }
     return 0;
 }

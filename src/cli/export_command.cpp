@@ -6,6 +6,7 @@
 #include "cli/commands.h"
 #include "cli/job.h"
 #include "files/atomic_file.h"
+#include "files/input_files.h"
 #include "meshes/mesh_writer.h"
 #include "text/input_error.h"
 
@@ -58,10 +59,11 @@ WorldMesh world_triangles(const Scene& scene, const std::string& file) {
 
 int run_export(const Args& args) {
     const auto out = args.value("--output");
-    if (!out) throw UsageError("export needs -o OUT.ply or -o OUT.obj");
+    if (!out || out->empty()) throw UsageError("export needs -o OUT.ply or -o OUT.obj");
     check_mesh_output(*out);
     check_output_file(*out);
     const Job job = job_from_args(args);
+    check_not_an_input(*out);  // a mesh the scene has just read, say
     const Scene& scene = job.scene();
     const WorldMesh world = world_triangles(scene, job.file);
     const std::vector<WorldTriangle>& triangles = world.triangles;

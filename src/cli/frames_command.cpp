@@ -10,6 +10,7 @@
 #include "cli/human.h"
 #include "cli/job.h"
 #include "cli/stats_output.h"
+#include "files/input_files.h"
 #include "gltf/gltf_loader.h"
 #include "pipeline/job.h"
 #include "text/input_error.h"
@@ -70,6 +71,7 @@ int run_frames(const Args& args) {
     RenderSettings settings = job.movie.settings;
     apply_quality_flags(args, settings);
     const FramesRequest request = frames_request(args, file, std::move(frames));
+    if (request.raw_video && *request.raw_video != "-") check_not_an_input(*request.raw_video);
 
     FramesProgress progress(request.files.folder.string(), !quiet && isatty(STDERR_FILENO), !quiet);
     const FramesSummary run = render_frames(job.movie, settings, request, progress);

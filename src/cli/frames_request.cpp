@@ -5,6 +5,7 @@
 
 #include "anim/frame_selection.h"
 #include "cli/cluster_shard.h"
+#include "files/atomic_file.h"
 #include "text/input_error.h"
 #include "text/parse_int.h"
 
@@ -49,6 +50,7 @@ void read_raw_video(const Args& args, FramesRequest& request) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--raw-pix-fmt: ") + e.what());
     }
+    check_stream_output(*raw);  // before --out's folder is made
     request.raw_video = *raw;
 }
 

@@ -2,6 +2,7 @@
 // lines (the encode script reads a movie's fps from it); --camera, --frame,
 // --animation, --fps and --exposure as render takes them.
 #include <iostream>
+#include <vector>
 
 #include "anim/frame_selection.h"
 #include "anim/movie.h"
@@ -28,9 +29,16 @@ void print_scene(const Scene& s, const RenderSettings& settings) {
               << "degenerate_triangles_dropped: " << s.degenerate_mesh_triangles << "\n";
     // Instances share their mesh's triangles: distinct ones are what memory
     // holds, instanced ones what the picture shows.
+    // (A mesh no instance places -- a morphed or skinned mesh's rest pose,
+    // whose instances place their own deformed copies -- is not traced.)
     size_t distinct = 0, instanced = 0;
-    for (const SceneMesh& m : s.meshes) distinct += m.mesh->triangles.size();
-    for (const Instance& i : s.instances) instanced += s.meshes[size_t(i.mesh)].mesh->triangles.size();
+    std::vector<bool> placed(s.meshes.size(), false);
+    for (const Instance& i : s.instances) {
+        instanced += s.meshes[size_t(i.mesh)].mesh->triangles.size();
+        placed[size_t(i.mesh)] = true;
+    }
+    for (size_t m = 0; m < s.meshes.size(); ++m)
+        if (placed[m]) distinct += s.meshes[m].mesh->triangles.size();
     std::cout << "shared_meshes: " << s.meshes.size() << "\n"
               << "instances: " << s.instances.size() << "\n"
               << "groups: " << s.groups.size() << "\n"

@@ -9,6 +9,7 @@
 #include "cli/job.h"
 #include "cli/stats_output.h"
 #include "files/atomic_file.h"
+#include "files/input_files.h"
 #include "images/image_writer.h"
 #include "text/input_error.h"
 #include "pipeline/frame_pipeline.h"
@@ -28,6 +29,7 @@ std::string default_output(const Job& job) {
 
 int run_render(const Args& args) {
     one_file(args);
+    if (args.value("--output") == "") throw UsageError("-o needs a file name (or '-' for standard output)");
     std::string out = args.value("--output").value_or("");
     if (out == "-") {
         if (args.has("--stats")) throw UsageError("-o - writes the image to standard output: not with --stats");
@@ -40,6 +42,7 @@ int run_render(const Args& args) {
     const Job job = job_from_args(args);
     const int threads = args.integer("--threads", 0, 0, 1024);
     if (out.empty()) out = default_output(job);
+    if (out != "-") check_not_an_input(out);  // a texture the scene has just read, say
     const StillResult still = render_to_file(job, out, threads);
     const FrameResult& r = still.frame;
     if (!args.has("--quiet"))

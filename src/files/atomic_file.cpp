@@ -136,10 +136,23 @@ void check_folder(const std::string& what, const fs::path& folder) {
 }  // namespace
 
 void check_output_file(const std::string& path) {
+    if (path.empty()) throw UsageError("an output file name is empty");
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw InputError(path, "cannot write: is a folder");
     const fs::path parent = fs::path(path).parent_path();
     check_folder(path, parent.empty() ? fs::path(".") : parent);
+}
+
+void check_stream_output(const std::string& path) {
+    if (path == "-") return;
+    if (path.empty()) throw UsageError("an output file name is empty");
+    std::error_code ec;
+    const fs::file_status st = fs::status(path, ec);
+    if (fs::exists(st) && !fs::is_directory(st) && !fs::is_regular_file(st)) {
+        if (::access(path.c_str(), W_OK) != 0) throw InputError(path, "cannot write: " + lower_strerror(errno));
+        return;
+    }
+    check_output_file(path);
 }
 
 void prepare_output_folder(const std::string& dir) {

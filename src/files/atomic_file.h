@@ -34,6 +34,10 @@ int remove_stale_temporaries(const std::string& dir, double max_age_seconds = 60
 // folder, or its folder does not exist or cannot be written. InputError
 // naming the path.
 void check_output_file(const std::string& path);
+// The same for a file written as a stream (raw video), which may also be
+// an existing pipe or device that can be opened for writing (a FIFO,
+// /dev/null); "-" (standard output) is always good.
+void check_stream_output(const std::string& path);
 // `dir` cannot be created, is not a folder, or cannot be written: InputError.
 // Creates it (and its parents) when missing.
 void prepare_output_folder(const std::string& dir);

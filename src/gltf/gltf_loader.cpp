@@ -9,6 +9,7 @@
 #include <numbers>
 #include <tuple>
 
+#include "files/file_names.h"
 #include "gltf/accessors.h"
 #include "gltf/gltf_animations.h"
 #include "gltf/gltf_cameras_lights.h"
@@ -238,8 +239,7 @@ private:
 }  // namespace
 
 bool is_gltf_file(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string ext = lowercase_extension(path);
     return ext == ".gltf" || ext == ".glb";
 }
 

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "files/input_files.h"
 #include "gltf/gltf_schema.h"
 #include "gltf/image_checks.h"
 #include "text/input_error.h"
@@ -142,6 +143,7 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
         if (folder->problem.empty()) folder->problem = "cannot read '" + shown(name) + "' whole";
         return false;
     }
+    note_input_file(path.string());
     return true;
 }
 
@@ -433,8 +435,8 @@ tinygltf::Model parse_gltf_model(const std::string& bytes, const std::string& fi
 }
 
 tinygltf::Model read_gltf_model(const std::string& path, std::vector<std::string>& warnings) {
+    if (const std::string why = why_unreadable(path); !why.empty()) throw InputError(path, "cannot read file: " + why);
     std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) throw InputError(path, "cannot read file: not a regular file, or missing");
     const auto size = fs::file_size(path, ec);
     if (ec) throw InputError(path, "cannot read file");
     if (size > kMaxGltfFileBytes)
@@ -445,6 +447,7 @@ tinygltf::Model read_gltf_model(const std::string& path, std::vector<std::string
     const size_t n = size ? std::fread(bytes.data(), 1, size, f) : 0;
     std::fclose(f);
     if (n != size) throw InputError(path, "cannot read file whole");
+    note_input_file(path);
     return parse_gltf_model(bytes, path, fs::path(path).parent_path().string(), warnings);
 }
 

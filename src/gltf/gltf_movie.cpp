@@ -79,7 +79,7 @@ Movie gltf_movie(GltfScene g, const GltfMovieRequest& request) {
     if (frames > 1'000'000) {
         char count[32];  // up to 1e308: printed as a double, never through a long
         std::snprintf(count, sizeof count, "%.4g", frames);
-        throw UsageError(request.file + ": " + count + " frames at this --fps (the limit is 1,000,000)");
+        throw InputError(request.file, std::string(count) + " frames at this --fps (the limit is 1,000,000)");
     }
     movie.seconds = frames / request.fps;
     return movie;

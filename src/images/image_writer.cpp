@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "files/atomic_file.h"
+#include "files/file_names.h"
 #include "text/input_error.h"
 #include "images/png_writer.h"
 
@@ -20,8 +21,7 @@ namespace fh {
 
 ImageFormat image_format_of(const std::string& path) {
     if (path == "-") return ImageFormat::png;
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string ext = lowercase_extension(path);
     if (ext == ".png") return ImageFormat::png;
     if (ext == ".jpg" || ext == ".jpeg") return ImageFormat::jpeg;
     if (ext == ".bmp") return ImageFormat::bmp;

@@ -74,12 +74,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <new>
 #include <sstream>
@@ -88,6 +85,8 @@
 
 #include <glm/common.hpp>
 
+#include "files/file_names.h"
+#include "files/input_files.h"
 #include "text/input_error.h"
 #include "meshes/assimp_messages.h"
 #include "meshes/mesh_file_headers.h"
@@ -132,23 +131,17 @@ private:
 
 // The file must exist, be a regular file and be readable; returns its size.
 std::uintmax_t check_file(const std::string& path) {
+    if (const std::string why = why_unreadable(path); !why.empty()) throw InputError(path, "cannot open mesh file: " + why);
     std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (status.type() == fs::file_type::not_found) throw InputError(path, "cannot open mesh file: no such file");
-    if (ec) throw InputError(path, "cannot open mesh file: " + lowercase(ec.message()));
-    if (status.type() == fs::file_type::directory) throw InputError(path, "cannot open mesh file: it is a folder");
-    if (status.type() != fs::file_type::regular) throw InputError(path, "cannot open mesh file: not a regular file");
-    errno = 0;
-    if (!std::ifstream(path, std::ios::binary))
-        throw InputError(path, "cannot open mesh file: " + lowercase(errno ? std::strerror(errno) : "cannot read"));
     const std::uintmax_t size = fs::file_size(path, ec);
     if (ec) throw InputError(path, "cannot open mesh file: " + lowercase(ec.message()));
+    note_input_file(path);
     return size;
 }
 
 Format format_of(const std::string& path) {
     const std::string ext = fs::path(path).extension().string();
-    const std::string lower = lowercase(ext);
+    const std::string lower = lowercase_extension(path);
     if (lower == ".obj") return Format::obj;
     if (lower == ".ply") return Format::ply;
     if (lower == ".stl") return Format::stl;

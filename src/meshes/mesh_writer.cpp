@@ -8,17 +8,12 @@
 #include <filesystem>
 
 #include "files/atomic_file.h"
+#include "files/file_names.h"
 #include "text/input_error.h"
 
 namespace fh {
 
 namespace {
-
-std::string extension_of(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 // A colour channel in [0, 1] as a byte.
 std::uint8_t byte_of(double c) { return std::uint8_t(std::lround(255 * std::clamp(c, 0.0, 1.0))); }
@@ -79,7 +74,7 @@ std::vector<std::uint8_t> obj(const std::vector<WorldTriangle>& triangles, const
 }  // namespace
 
 void check_mesh_output(const std::string& path) {
-    const std::string ext = extension_of(path);
+    const std::string ext = lowercase_extension(path);
     if (ext != ".ply" && ext != ".obj")
         throw UsageError("-o " + path + ": export writes .ply or .obj (by the name's extension)");
 }
@@ -87,7 +82,7 @@ void check_mesh_output(const std::string& path) {
 void write_mesh(const std::string& path, const std::vector<WorldTriangle>& triangles,
                 const std::vector<WorldTriangle>& colors) {
     check_mesh_output(path);
-    write_file_atomic(path, extension_of(path) == ".ply" ? ply(triangles, colors) : obj(triangles, colors));
+    write_file_atomic(path, lowercase_extension(path) == ".ply" ? ply(triangles, colors) : obj(triangles, colors));
 }
 
 }  // namespace fh

@@ -10,6 +10,7 @@
 
 #include <sys/stat.h>
 
+#include "files/input_files.h"
 #include "text/input_error.h"
 #include "text/utf8.h"
 
@@ -64,13 +65,12 @@ void check_input_text(const std::string& file, const std::string& text, std::siz
 }
 
 std::string read_input_file(const std::string& path, std::size_t max_bytes) {
+    // Opening a folder succeeds on Linux and then reads nothing; a device or a
+    // pipe may never end. Say why instead.
+    if (const std::string why = why_unreadable(path); !why.empty()) throw InputError(path, "cannot read file: " + why);
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0)
         throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(errno)));
-    // Opening a folder succeeds on Linux and then reads nothing; a device or a
-    // pipe may never end. Say why instead.
-    if (S_ISDIR(st.st_mode)) throw InputError(path, "cannot read file: is a directory");
-    if (!S_ISREG(st.st_mode)) throw InputError(path, "cannot read file: not a regular file");
     if (static_cast<unsigned long long>(st.st_size) > max_bytes) throw too_large(path, std::size_t(st.st_size), max_bytes);
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(errno)));
@@ -88,6 +88,7 @@ std::string read_input_file(const std::string& path, std::size_t max_bytes) {
     std::fclose(f);
     if (failed) throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(read_errno)));
     text.resize(n);
+    note_input_file(path);
     check_input_text(path, text, max_bytes);
     return text;
 }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <unordered_set>
 
+#include "files/input_files.h"
 #include "gltf/gltf_loader.h"
 #include "gltf/gltf_movie.h"
 #include "yaml/key_list.h"
@@ -27,12 +28,10 @@ namespace fs = std::filesystem;
 
 std::string scene_path(const YamlReader& r, const MapReader& m) {
     const YAML::Node node = m.value("scene");
-    const fs::path path = fs::path(r.file()).parent_path() / r.string(node, "scene");
+    const fs::path path = fs::path(r.file()).parent_path() / r.file_name(node, "scene");
+    if (const std::string why = why_unreadable(path.string()); !why.empty())
+        r.fail(node, "scene file '" + path.string() + "': " + why);
     std::error_code ec;
-    const fs::file_status status = fs::status(path, ec);
-    if (!fs::exists(status)) r.fail(node, "scene file '" + path.string() + "' does not exist");
-    if (fs::is_directory(status)) r.fail(node, "scene file '" + path.string() + "' is a directory");
-    if (!fs::is_regular_file(status)) r.fail(node, "scene file '" + path.string() + "' is not a regular file");
     if (fs::equivalent(path, r.file(), ec)) r.fail(node, "a movie cannot be its own scene");
     // Loading a movie as a scene would only complain about an unknown key 'scene'.
     if (is_movie_file(path.string())) r.fail(node, "scene file '" + path.string() + "' is a movie, not a scene");

@@ -328,7 +328,7 @@ private:
     }
 
     std::filesystem::path relative(const MapReader& m, const std::string& key) const {
-        return std::filesystem::path(r_.file()).parent_path() / r_.string(m.value(key), key);
+        return std::filesystem::path(r_.file()).parent_path() / r_.file_name(m.value(key), key);
     }
 
     // A mesh file's data, read once per scene whatever names it.

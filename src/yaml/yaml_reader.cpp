@@ -336,6 +336,12 @@ std::string YamlReader::string(const YAML::Node& node, const std::string& name) 
     return node.Scalar();
 }
 
+std::string YamlReader::file_name(const YAML::Node& node, const std::string& name) const {
+    std::string file = string(node, name);
+    if (file.empty()) fail(node, "'" + name + "' names no file (it is empty)");
+    return file;
+}
+
 dvec3 YamlReader::vec3(const YAML::Node& node, const std::string& name) const {
     if (!node.IsSequence() || node.size() != 3) fail(node, "expected a list of 3 numbers for '" + name + "'");
     return {number(node[0], name), number(node[1], name), number(node[2], name)};

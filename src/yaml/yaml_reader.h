@@ -46,6 +46,7 @@ public:
     int integer(const YAML::Node& node, const std::string& name, int min, int max) const;
     bool boolean(const YAML::Node& node, const std::string& name) const;
     std::string string(const YAML::Node& node, const std::string& name) const;
+    std::string file_name(const YAML::Node& node, const std::string& name) const;  // a string, not empty
     dvec3 vec3(const YAML::Node& node, const std::string& name) const;       // 3 finite numbers
     dvec3 color(const YAML::Node& node, const std::string& name) const;      // 3 numbers in 0..255
     dvec3 direction(const YAML::Node& node, const std::string& name) const;  // non-zero, as given

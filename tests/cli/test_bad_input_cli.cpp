@@ -6,6 +6,7 @@
 #include <regex>
 
 #include "cli/run_command.h"
+#include "gltf/gltf_builder.h"
 
 namespace fh::test {
 namespace {
@@ -26,7 +27,8 @@ const std::string kGoodScene =
     "                look_at: [0, 1, -1], up: [0, 0, 1], projection_distance: 10}\n";
 const std::string kGoodMovie = "scene: scene.yaml\ncamera: perspective\nfps: 12\nseconds: 1\n";
 
-// One bad input: the files it needs (name -> content, in the case's folder),
+// One bad input: the files it needs (name -> content, in the case's folder;
+// content "-> NAME": a symbolic link to NAME),
 // the command line (DIR stands for the folder) and the one line expected.
 struct Case {
     std::string name;
@@ -51,7 +53,10 @@ void check_case(const Case& c) {
     std::ofstream(dir / "movie.yaml") << kGoodMovie;
     fs::create_directories(dir / "folder.yaml");
     std::ofstream(dir / "file.txt") << "x";
-    for (const auto& [name, content] : c.files) std::ofstream(dir / name, std::ios::binary) << content;
+    for (const auto& [name, content] : c.files) {
+        if (content.rfind("-> ", 0) == 0) fs::create_symlink(content.substr(3), dir / name);  // a link to a file
+        else std::ofstream(dir / name, std::ios::binary) << content;
+    }
     const auto before = fs::directory_iterator(dir);
     size_t entries = 0;
     for (auto it = before; it != fs::directory_iterator(); ++it) ++entries;
@@ -69,6 +74,11 @@ void check_case(const Case& c) {
         ++after;
     }
     EXPECT_EQ(after, entries) << "a file was written: " << args;
+    // ... and none replaced: the inputs keep their bytes.
+    std::vector<std::pair<std::string, std::string>> files = c.files;
+    files.insert(files.end(), {{"scene.yaml", kGoodScene}, {"movie.yaml", kGoodMovie}, {"file.txt", "x"}});
+    for (const auto& [name, content] : files)
+        if (!fs::is_symlink(dir / name) && fs::is_regular_file(dir / name)) EXPECT_EQ(slurp(dir / name), content) << name << " was replaced: " << args;
 }
 
 // A scene: the good one with `from` replaced by `to`.
@@ -150,10 +160,10 @@ TEST(BadInputCli, WholeFileMistakes) {
         {"several_mb", {{"bad.yaml", big}}, render("bad.yaml"),
          "DIR/bad.yaml: error: file too large: " + std::to_string(big.size()) +
              " bytes (the limit is 16777216 bytes, 16 MiB)"},
-        {"directory", {}, render("folder.yaml"), "DIR/folder.yaml: error: cannot read file: is a directory"},
-        {"missing", {}, render("nothing.yaml"), "DIR/nothing.yaml: error: cannot read file: no such file or directory"},
+        {"directory", {}, render("folder.yaml"), "DIR/folder.yaml: error: cannot read file: is a folder"},
+        {"missing", {}, render("nothing.yaml"), "DIR/nothing.yaml: error: cannot read file: no such file"},
         {"device", {}, "render /dev/zero -o DIR/out.png", "/dev/zero: error: cannot read file: not a regular file"},
-        {"frames_of_directory", {}, frames("folder.yaml"), "DIR/folder.yaml: error: cannot read file: is a directory"},
+        {"frames_of_directory", {}, frames("folder.yaml"), "DIR/folder.yaml: error: cannot read file: is a folder"},
         {"frames_of_binary", {{"bad.yaml", std::string("\0\1\2", 3)}}, frames("bad.yaml"),
          "DIR/bad.yaml:1:1: error: binary data, not text: control byte 0x00 (scene and movie files are UTF-8 text)"},
         {"frames_of_movie_with_syntax_error", {{"bad.yaml", "scene: scene.yaml\nfps: [30\n"}}, frames("bad.yaml"),
@@ -168,11 +178,11 @@ TEST(BadInputCli, WholeFileMistakes) {
 TEST(BadInputCli, MovieFileMistakes) {
     const Case cases[] = {
         {"scene_missing", {{"bad.yaml", "scene: nothing.yaml\n"}}, frames("bad.yaml"),
-         "DIR/bad.yaml:1:8: error: scene file 'DIR/nothing.yaml' does not exist"},
+         "DIR/bad.yaml:1:8: error: scene file 'DIR/nothing.yaml': no such file"},
         {"scene_itself", {{"bad.yaml", "scene: bad.yaml\n"}}, frames("bad.yaml"),
          "DIR/bad.yaml:1:8: error: a movie cannot be its own scene"},
         {"scene_directory", {{"bad.yaml", "scene: folder.yaml\n"}}, frames("bad.yaml"),
-         "DIR/bad.yaml:1:8: error: scene file 'DIR/folder.yaml' is a directory"},
+         "DIR/bad.yaml:1:8: error: scene file 'DIR/folder.yaml': is a folder"},
         {"scene_is_a_movie", {{"bad.yaml", "scene: movie.yaml\n"}}, frames("bad.yaml"),
          "DIR/bad.yaml:1:8: error: scene file 'DIR/movie.yaml' is a movie, not a scene"},
         {"fps_zero", {{"bad.yaml", "scene: scene.yaml\nfps: 0\n"}}, frames("bad.yaml"),
@@ -212,6 +222,64 @@ TEST(BadInputCli, OutputThatCannotBeWritten) {
          "DIR/file.txt: error: cannot create output folder: not a directory"},
         {"frames_out_under_a_file", {}, "frames DIR/movie.yaml --quiet --out DIR/file.txt/frames",
          "DIR/file.txt/frames: error: cannot create output folder: not a directory"},
+    };
+    for (const Case& c : cases) check_case(c);
+}
+
+// No output replaces a file the run reads, whatever it is called, and
+// every output is checked before the work: `accuracy --csv s.yaml` once
+// wrote its table over the scene it had measured, `frames --raw-video
+// model.bin` truncated the model's buffer, and a bad --csv or --plot was
+// found only after the sweep's minutes of rendering.
+TEST(BadInputCli, OutputsThatWouldReplaceAnInputOrComeTooLateAndEmptyNames) {
+    using namespace gltf_test;
+    Bin bin;
+    const std::string model = gltf_json(triangle_body(bin), bin, in_file("model.bin"));
+    const std::string rows = "tx,ty,tz\n0,0,1\n";
+    const std::string tri = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    const auto with_instances = scene_with("surfaces:\n", "meshes:\n  tri: {file: tri.off}\nsurfaces:\n"
+                                                           "  - {type: instances, mesh: tri, material: red, placements: rows.csv}\n");
+    const auto with_ply = scene_with("surfaces:\n", "meshes:\n  tri: {file: tri.ply}\nsurfaces:\n"
+                                                     "  - {type: instance, mesh: tri, material: red}\n");
+    const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                            "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                            "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    const std::string sweep = " --resolution 8x8 --max-spp 2 --reference-spp 2 --runs 1";
+    const Case cases[] = {
+        {"accuracy_csv_over_its_scene", {}, "accuracy DIR/scene.yaml --csv DIR/scene.yaml" + sweep,
+         "firsthit: error: --csv DIR/scene.yaml: the table's name must end in .csv"},
+        {"accuracy_csv_over_its_placements", {with_instances, {"rows.csv", rows}, {"tri.off", tri}},
+         "accuracy DIR/bad.yaml --csv DIR/rows.csv" + sweep, "DIR/rows.csv: error: cannot write: it is a file this run reads"},
+        {"accuracy_plot_not_png", {}, "accuracy DIR/scene.yaml --csv DIR/t.csv --plot DIR/p.xyz" + sweep,
+         "firsthit: error: --plot DIR/p.xyz: the plot's name must end in .png"},
+        {"accuracy_plot_without_csv", {}, "accuracy DIR/scene.yaml --plot DIR/p.png" + sweep,
+         "firsthit: error: --plot needs --csv (gnuplot reads the table from it)"},
+        {"accuracy_csv_missing_folder", {}, "accuracy DIR/scene.yaml --csv DIR/missing/t.csv" + sweep,
+         "DIR/missing/t.csv: error: cannot write: folder 'DIR/missing' does not exist"},
+        {"export_over_its_mesh", {with_ply, {"tri.ply", ply}}, "export DIR/bad.yaml -o DIR/tri.ply",
+         "DIR/tri.ply: error: cannot write: it is a file this run reads"},
+        {"render_over_its_scene_by_a_link", {{"link.png", "-> scene.yaml"}}, "render DIR/scene.yaml -o DIR/link.png",
+         "DIR/link.png: error: cannot write: it is a file this run reads"},
+        {"raw_video_over_its_buffer", {{"model.gltf", model}, {"model.bin", bin.bytes()}},
+         frames("model.gltf", "--raw-video DIR/model.bin"), "DIR/model.bin: error: cannot write: it is a file this run reads"},
+        {"raw_video_over_its_movie", {}, frames("movie.yaml", "--raw-video DIR/movie.yaml"),
+         "DIR/movie.yaml: error: cannot write: it is a file this run reads"},
+        {"raw_video_missing_folder", {}, frames("movie.yaml", "--raw-video DIR/missing/v.raw"),
+         "DIR/missing/v.raw: error: cannot write: folder 'DIR/missing' does not exist"},
+        {"raw_video_into_a_folder", {}, frames("movie.yaml", "--raw-video DIR/folder.yaml"),
+         "DIR/folder.yaml: error: cannot write: is a folder"},
+        {"mesh_file_empty", {scene_with("surfaces:\n", "meshes:\n  tri: {file: \"\"}\nsurfaces:\n")}, render("bad.yaml"),
+         "DIR/bad.yaml:4:15: error: 'file' names no file (it is empty)"},
+        {"placements_empty", {scene_with("surfaces:\n", "meshes:\n  tri: {file: tri.off}\nsurfaces:\n"
+                                                        "  - {type: instances, mesh: tri, material: red, placements: ''}\n"),
+                              {"tri.off", tri}},
+         render("bad.yaml"), "DIR/bad.yaml:6:61: error: 'placements' names no file (it is empty)"},
+        {"gltf_file_empty", {scene_with("surfaces:\n", "surfaces:\n  - {type: gltf, file: ''}\n")}, render("bad.yaml"),
+         "DIR/bad.yaml:4:24: error: 'file' names no file (it is empty)"},
+        {"render_empty_output", {}, "render DIR/scene.yaml -o ''",
+         "firsthit: error: -o needs a file name (or '-' for standard output)"},
+        {"export_empty_output", {}, "export DIR/scene.yaml -o ''",
+         "firsthit: error: export needs -o OUT.ply or -o OUT.obj"},
     };
     for (const Case& c : cases) check_case(c);
 }

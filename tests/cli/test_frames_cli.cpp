@@ -95,6 +95,21 @@ TEST(FramesCli, RawVideoIsEveryFrameInOrder) {
     }
 }
 
+// Raw video may go to a named pipe (an encoder reading it) or a device, whose
+// folder need not be writable: the checks before rendering let them through.
+TEST(FramesCli, RawVideoGoesToANamedPipeOrADevice) {
+    const fs::path dir = tiny_movie("frames_raw_pipe");
+    const fs::path fifo = dir / "pipe", got = dir / "got.rgb";
+    const auto r = run_shell("mkfifo " + fifo.string() + " && { cat " + fifo.string() + " > " + got.string() +
+                             " & } && " + std::string(FIRSTHIT_BINARY) + " " +
+                             frames_command(dir, "--out " + (dir / "f").string() + " --raw-video " + fifo.string()) +
+                             "; s=$?; [ $s -eq 0 ] || : > " + fifo.string() + "; wait; exit $s");  // cat never waits on
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(fs::file_size(got), 12u * 64 * 64 * 3);
+    const auto null = run_firsthit(frames_command(dir, "--out " + (dir / "g").string() + " --raw-video /dev/null"));
+    EXPECT_EQ(null.status, 0) << null.err;
+}
+
 TEST(FramesCli, RawVideoInYuv420pIsEachFrameConverted) {
     const fs::path dir = tiny_movie("frames_raw_yuv");
     const auto r = run_firsthit(frames_command(dir, "--threads 3 --out " + (dir / "f").string() + " --raw-video " +

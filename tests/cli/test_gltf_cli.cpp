@@ -325,6 +325,17 @@ TEST(GltfCli, InfoCountsTexturesCutoutsAndSeeThroughMaterials) {
         << info.out;
 }
 
+// Debian's AnimatedMorphCube: one cube of 12 triangles, morphed, so its node
+// traces its own copy and the rest pose is not traced. info counted both
+// (24 distinct triangles, 12 shown).
+TEST(GltfCli, InfoCountsAMorphedMeshOnce) {
+    const auto info = run_firsthit(
+        "info /usr/share/assimp/models/glTF2/glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf");
+    ASSERT_EQ(info.status, 0) << info.err;
+    EXPECT_NE(info.out.find("\ninstances: 1\n"), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find("\ndistinct_triangles: 12\ninstanced_triangles: 12\n"), std::string::npos) << info.out;
+}
+
 // Debian's AnimatedMorphCube.gltf at frame 60 (2 s, its key 60): weights
 // (0.8055561, 0.1944439). Vertex 5 rests at (-0.01, -0.01, -0.01); the
 // targets move its y by 0.0189325 and 0.0198908: y = -0.01 + 0.8055561 x

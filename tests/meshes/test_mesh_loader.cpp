@@ -403,7 +403,7 @@ TEST(MeshLoaderErrors, MissingFileAndFolder) {
     EXPECT_EQ(mesh_error(test::temp_dir().string() + "/no_such.obj"), "FILE: error: cannot open mesh file: no such file");
     const std::filesystem::path folder = test::temp_dir() / "folder.obj";
     std::filesystem::create_directories(folder);
-    EXPECT_EQ(mesh_error(folder.string()), "FILE: error: cannot open mesh file: it is a folder");
+    EXPECT_EQ(mesh_error(folder.string()), "FILE: error: cannot open mesh file: is a folder");
 }
 
 TEST(MeshLoaderErrors, UnknownExtension) {

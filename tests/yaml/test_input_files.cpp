@@ -35,7 +35,7 @@ TEST(InputFiles, EmptyFile) {
 }
 
 TEST(InputFiles, DirectoryGivenAsFile) {
-    EXPECT_EQ(error_of_file(test::temp_dir().string()), "FILE: error: cannot read file: is a directory");
+    EXPECT_EQ(error_of_file(test::temp_dir().string()), "FILE: error: cannot read file: is a folder");
 }
 
 TEST(InputFiles, DeviceOrPipeIsNotRead) {

@@ -134,11 +134,11 @@ TEST(MovieLoader, KeyframesInOrderWithInterpolation) {
 
 TEST(MovieLoader, MissingSceneFile) {
     EXPECT_EQ(movie_error("camera: persp\nscene: nothing.yaml\n"),
-              "FILE:2:8: error: scene file 'DIR/nothing.yaml' does not exist");
+              "FILE:2:8: error: scene file 'DIR/nothing.yaml': no such file");
 }
 
 TEST(MovieLoader, SceneIsADirectory) {
-    EXPECT_EQ(movie_error("scene: .\n"), "FILE:1:8: error: scene file 'DIR/.' is a directory");
+    EXPECT_EQ(movie_error("scene: .\n"), "FILE:1:8: error: scene file 'DIR/.': is a folder");
 }
 
 TEST(MovieLoader, SceneIsTheMovieItself) {
@@ -146,7 +146,7 @@ TEST(MovieLoader, SceneIsTheMovieItself) {
 }
 
 TEST(MovieLoader, SceneIsNotARegularFile) {
-    EXPECT_EQ(movie_error("scene: /dev/zero\n"), "FILE:1:8: error: scene file '/dev/zero' is not a regular file");
+    EXPECT_EQ(movie_error("scene: /dev/zero\n"), "FILE:1:8: error: scene file '/dev/zero': not a regular file");
 }
 
 TEST(MovieLoader, SceneIsAnotherMovie) {
@@ -158,7 +158,7 @@ TEST(MovieLoader, SceneIsAnotherMovie) {
 TEST(MovieLoader, SceneNameIsEmptyOrNotAName) {
     EXPECT_EQ(movie_error("scene:\n"), "FILE:1:1: error: missing value for 'scene'");
     EXPECT_EQ(movie_error("scene: [a.yaml]\n"), "FILE:1:8: error: expected a name for 'scene', got a list");
-    EXPECT_EQ(movie_error("scene: \"\"\n"), "FILE:1:8: error: scene file 'DIR/' is a directory");
+    EXPECT_EQ(movie_error("scene: \"\"\n"), "FILE:1:8: error: 'scene' names no file (it is empty)");
 }
 
 TEST(MovieLoader, EmptyAndBinaryMovieFiles) {
