@@ -202,6 +202,43 @@ TEST(GltfCli, TheDemoInAYamlSceneAndMovie) {
     }
 }
 
+// A file placed in a scene file brings its cameras and lights named as its
+// materials are, SURFACE/NAME: the demo placed twice beside a light of its
+// own light's name once gave three lights named 'sun', of which a movie's
+// `lights.sun` quietly moved one. Two unnamed placements would bring the
+// same names again: an error at the second.
+TEST(GltfCli, AFilePlacedTwiceNamesItsCamerasAndLightsByItsSurface) {
+    const fs::path dir = fresh_dir("gltf_placed_twice");
+    const std::string demo = source_path("animations/gltf/demo.gltf");
+    const std::string head =
+        "lights:\n  sun: {type: directional, color: [255, 255, 255], intensity: 0.5, direction: [0, 0, -1]}\n"
+        "cameras:\n  c: {type: perspective, width: 32, height: 24, view_point: [0, -20, 8], look_at: [0, 20, -8], "
+        "up: [0, 0, 1], projection_distance: 10}\nsurfaces:\n";
+    std::ofstream(dir / "two.yaml") << head << "  - {type: gltf, name: a, file: " << demo << "}\n"
+                                    << "  - {type: gltf, name: b, file: " << demo << ", transform: {translate: [3, 0, 0]}}\n";
+    const auto info = run_firsthit("info " + (dir / "two.yaml").string());
+    ASSERT_EQ(info.status, 0) << info.err;
+    EXPECT_NE(info.out.find("\nlights: a/sun b/sun sun a/spot a/lamp b/spot b/lamp\n"), std::string::npos) << info.out;
+    EXPECT_NE(info.out.find("\ncameras: c a/front b/front\n"), std::string::npos) << info.out;
+    const auto picked = run_firsthit("render " + (dir / "two.yaml").string() + " --camera b/front -o " +
+                                     (dir / "b.png").string());
+    EXPECT_EQ(picked.status, 0) << picked.err;
+    const auto bare = run_firsthit("render " + (dir / "two.yaml").string() + " --camera front -o " +
+                                   (dir / "x.png").string());
+    EXPECT_EQ(bare.status, 2);
+    EXPECT_EQ(bare.err, "firsthit: error: no camera 'front' in " + (dir / "two.yaml").string() +
+                            " (did you mean 'a/front'?)\n");
+
+    std::ofstream(dir / "unnamed.yaml") << head << "  - {type: gltf, file: " << demo << "}\n"
+                                        << "  - {type: gltf, file: " << demo << "}\n";
+    const auto twice = run_firsthit("info " + (dir / "unnamed.yaml").string());
+    EXPECT_EQ(twice.status, 2);
+    EXPECT_EQ(twice.err, (dir / "unnamed.yaml").string() +
+                             ":7:24: error: a second camera or light named 'gltf/front' (give each glTF surface a "
+                             "name of its own)\n");
+    EXPECT_EQ(twice.out, "");
+}
+
 // A .gltf names its default scene with a "scene" key, as the demo does; it
 // is still a scene to a movie, not a movie of its own.
 TEST(GltfCli, AGltfWithASceneKeyIsAMoviesScene) {
