@@ -1,6 +1,7 @@
 // firsthit frames MOVIE: every frame of a movie (or a range or shard of them)
 // to DIR/frame_NNNN.png, through the frame pipeline (pipeline/frame_pipeline.h).
 #include <iostream>
+#include <sstream>
 
 #include <unistd.h>
 
@@ -44,6 +45,19 @@ Job movie_job(const Args& args) {
     return load_job(what);
 }
 
+// What besides the movie file decides the frames' pixels (FramesOrigin::render).
+std::string render_description(const Job& job, const RenderSettings& s, const Args& args) {
+    std::ostringstream d;
+    d << "camera " << job.movie.camera.name << ", " << s.samples_per_pixel
+      << (s.samples_per_pixel == 1 ? " sample" : " samples");
+    if (s.adaptive) d << ", adaptive " << s.adaptive_threshold << "/" << s.adaptive_samples;
+    d << ", depth " << s.max_depth << ", " << precision_name(s.precision);
+    if (!s.mipmaps) d << ", no mipmaps";
+    if (const auto a = args.value("--animation")) d << ", animation " << *a;
+    if (const auto x = args.value("--exposure")) d << ", exposure " << *x;
+    return d.str();
+}
+
 void print_summary(const Args& args, const FramesSummary& run, const RenderSettings& settings,
                    const std::string& folder) {
     const double fps = run.seconds > 0 ? run.rendered / run.seconds : 0;
@@ -70,7 +84,8 @@ int run_frames(const Args& args) {
         if (!quiet) std::cerr << warning << "\n";
     RenderSettings settings = job.movie.settings;
     apply_quality_flags(args, settings);
-    const FramesRequest request = frames_request(args, file, std::move(frames));
+    FramesRequest request = frames_request(args, file, std::move(frames));
+    request.render = render_description(job, settings, args);
     if (request.raw_video && *request.raw_video != "-") check_not_an_input(*request.raw_video);
 
     FramesProgress progress(request.files.folder.string(), !quiet && isatty(STDERR_FILENO), !quiet);

@@ -110,6 +110,7 @@ std::string FramesOrigin::describe() const {
     std::ostringstream s;
     s << movie << ": " << frames << (frames == 1 ? " frame" : " frames") << " at " << fps << " fps, " << width << "x"
       << height;
+    if (!render.empty()) s << " (" << render << ")";
     return s.str();
 }
 
@@ -118,6 +119,7 @@ std::string FramesOrigin::text() const {
     s << "# firsthit frames: the movie these frames belong to (scripts/encode.sh reads it)\n"
       << "movie: " << movie << "\nframes: " << frames << "\nfps: " << fps << "\nwidth: " << width
       << "\nheight: " << height << "\npattern: " << pattern << "\n";
+    if (!render.empty()) s << "render: " << render << "\n";
     return s.str();
 }
 
@@ -141,6 +143,7 @@ std::optional<FramesOrigin> read_frames_origin(const std::filesystem::path& movi
             else if (key == "width") o.width = std::stoi(value);
             else if (key == "height") o.height = std::stoi(value);
             else if (key == "pattern") o.pattern = value;
+            else if (key == "render") o.render = value;
         } catch (const std::exception&) {
             throw InputError(movie_file.string(), line_number, int(colon + 3), "'" + value + "' is no number");
         }
@@ -167,7 +170,10 @@ int claim_frame_folder(const FrameFiles& files, const FramesOrigin& origin, bool
                              std::to_string(size->second);
         }
     }
-    const bool other_movie = before && before->text() != origin.text();
+    // (A movie file from before the render line was written says nothing of it.)
+    FramesOrigin compared = origin;
+    if (before && before->render.empty()) compared.render.clear();
+    const bool other_movie = before && before->text() != compared.text();
     int removed = 0;
     if (clean) {
         for (const auto& f : frames) removed += std::filesystem::remove(f) ? 1 : 0;

@@ -45,6 +45,11 @@ struct FramesOrigin {
     double fps = 0;
     int width = 0, height = 0;
     std::string pattern;  // the file names, as ffmpeg reads them: frame_%04d.png
+    // What else decides their pixels -- the camera, the quality settings,
+    // the glTF animation and exposure chosen -- so that --resume or another
+    // shard never mixes frames rendered differently: "camera persp, 1
+    // sample, depth 5, double" (FramesRequest::render).
+    std::string render;
 
     // The movie file's text; two origins are the same when their texts are.
     std::string text() const;

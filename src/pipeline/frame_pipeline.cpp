@@ -32,7 +32,7 @@ FramesSummary render_frames(const Movie& movie, const RenderSettings& settings, 
     const int n = movie.frame_count();
     if (request.clean && request.resume) throw UsageError("clean removes the frames resume would keep: not both");
     const FramesOrigin origin{std::filesystem::absolute(request.movie_file).lexically_normal().string(), n, movie.fps,
-                              movie.camera.width, movie.camera.height, files.pattern(n)};
+                              movie.camera.width, movie.camera.height, files.pattern(n), request.render};
     if (const int removed = claim_frame_folder(files, origin, request.clean)) observer.removed_old_frames(removed);
     if (const int removed = remove_stale_temporaries(files.folder.string())) observer.removed_temporaries(removed);
 

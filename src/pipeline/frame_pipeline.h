@@ -25,6 +25,7 @@ struct FramesRequest {
     std::vector<int> frames;  // which frames, increasing (anim/frame_selection.h)
     FrameFiles files;         // where they go (pipeline/frame_files.h)
     std::string movie_file;   // the movie's file, for the frames' movie file
+    std::string render;       // what else decides the pixels, for it too (FramesOrigin::render)
     bool resume = false;      // skip the frames whose file is already complete
     bool clean = false;       // remove frames of another movie or size under the same names
     // Also every frame in order to this file ("-": standard output); needs

@@ -56,6 +56,28 @@ TEST(FramesCli, RangeShardsAndResumeGiveTheSameBytesAsOneRun) {
         EXPECT_EQ(slurp(dir / "shards" / name), slurp(dir / "full" / name)) << name;
 }
 
+// --resume and --shard keep the frames already there, so they must be of
+// the same render: another sample count, depth, precision or camera is
+// refused (it once mixed silently); a folder from before frame_movie.txt
+// had its render line is taken as it was.
+TEST(FramesCli, ResumeRefusesFramesRenderedOtherwise) {
+    const fs::path dir = tiny_movie("frames_other_render");
+    const std::string out = " --out " + (dir / "f").string();
+    ASSERT_EQ(run_firsthit(frames_command(dir, "--range 0:6" + out)).status, 0);
+    EXPECT_NE(slurp(dir / "f" / "frame_movie.txt").find("\nrender: camera perspective, 1 sample, depth 5, double\n"),
+              std::string::npos);
+    for (const std::string other : {"--spp 2", "--depth 1", "--precision float", "--adaptive"}) {
+        const auto r = run_firsthit(frames_command(dir, "--resume " + other + out));
+        EXPECT_EQ(r.status, 2) << other;
+        EXPECT_NE(r.err.find("Pass --clean"), std::string::npos) << other << ": " << r.err;
+    }
+    const std::string movie_file = slurp(dir / "f" / "frame_movie.txt");
+    std::ofstream(dir / "f" / "frame_movie.txt") << movie_file.substr(0, movie_file.find("render: "));
+    const auto r = run_firsthit(frames_command(dir, "--resume --stats" + out));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("frames: 6\n"), std::string::npos) << r.out;
+}
+
 TEST(FramesCli, OneFrameFromRenderEqualsTheSameFrameOfTheMovie) {
     const fs::path dir = tiny_movie("frames_single");
     ASSERT_EQ(run_firsthit(frames_command(dir, "--out " + (dir / "f").string())).status, 0);

@@ -160,7 +160,8 @@ TEST(NewcomerCli, FramesOutTakesAPattern) {
     EXPECT_EQ(slurp(dir / "shots/take2_movie.txt"),
               "# firsthit frames: the movie these frames belong to (scripts/encode.sh reads it)\nmovie: " +
                   fs::absolute(dir / "tiny.yaml").lexically_normal().string() +
-                  "\nframes: 12\nfps: 12\nwidth: 64\nheight: 64\npattern: take2_%03d.png\n");
+                  "\nframes: 12\nfps: 12\nwidth: 64\nheight: 64\npattern: take2_%03d.png\n"
+                  "render: camera perspective, 1 sample, depth 5, double\n");
     const std::vector<std::pair<std::string, std::string>> bad = {
         {"a%04d/b.png", "the frame number (%04d or ####) goes in the file name, not the folder"},
         {"a%04d_##.png", "has two frame numbers; give one (%04d or ####)"},
@@ -187,16 +188,18 @@ TEST(NewcomerCli, FramesRefusesAnotherMoviesFramesUnlessClean) {
     auto r = run_firsthit("frames " + movie + " --quiet --resolution 32x32 --out " + q(out));
     EXPECT_EQ(r.status, 2);
     const std::string absolute = fs::absolute(dir / "tiny.yaml").lexically_normal().string();
+    const std::string kRender = "camera perspective, 1 sample, depth 5, double";
     EXPECT_EQ(r.err, "firsthit: error: " + (out / "frame_*.png").string() + " holds frames of " + absolute +
-                         ": 12 frames at 12 fps, 64x64; this render is " + absolute +
-                         ": 12 frames at 12 fps, 32x32. Pass --clean to remove the old frames first, or another --out\n");
+                         ": 12 frames at 12 fps, 64x64 (" + kRender + "); this render is " + absolute +
+                         ": 12 frames at 12 fps, 32x32 (" + kRender +
+                         "). Pass --clean to remove the old frames first, or another --out\n");
     EXPECT_EQ(size_of(out / "frame_0011.png"), std::pair(64, 64));
     // A shorter version of the movie: refused too.
     const fs::path shorter = dir / "shorter.yaml";
     std::ofstream(shorter) << std::regex_replace(slurp(dir / "tiny.yaml"), std::regex("seconds: 1"), "seconds: 0.5");
     r = run_firsthit("frames " + q(shorter) + " --quiet --out " + q(out));
     EXPECT_EQ(r.status, 2);
-    EXPECT_NE(r.err.find("6 frames at 12 fps, 64x64. Pass --clean"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("6 frames at 12 fps, 64x64 (" + kRender + "). Pass --clean"), std::string::npos) << r.err;
     EXPECT_EQ(run_firsthit("frames " + q(shorter) + " --clean --resume --out " + q(out)).err,
               "firsthit: error: --clean removes the frames --resume would keep: give one\n");
     // --clean: the old frames go, the new ones come.
