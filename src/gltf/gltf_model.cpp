@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <cstdlib>
 #include <filesystem>
 
 #include "files/input_files.h"
@@ -332,9 +333,30 @@ void check_buffers_and_image_views(const nlohmann::json& j, const std::string& f
     }
 }
 
+// glTF 2.0, or a later 2.x this loader may read (asset.minVersion at most
+// 2.0): a glTF 1.0 file -- Debian's glTF/ folder holds several -- is told
+// so, not failed on its first 1.0-shaped field ("scene" as a name).
+void check_version(const nlohmann::json& j, const std::string& file) {
+    if (!j.is_object() || !j.contains("asset") || !j["asset"].is_object()) return;  // the schema says what is wrong
+    const nlohmann::json& asset = j["asset"];
+    auto major_of = [](const nlohmann::json& v) {
+        if (v.is_number()) return v.get<double>() >= 2 ? 2 : 1;  // glTF 1.0 files that wrote 1, not "1.0"
+        const std::string text = v.is_string() ? v.get<std::string>() : "";
+        return text.empty() || text[0] < '0' || text[0] > '9' ? -1 : std::atoi(text.c_str());
+    };
+    const int major = asset.contains("version") ? major_of(asset["version"]) : -1;
+    if (major >= 0 && major < 2)
+        throw InputError(file, "a glTF 1.0 file (asset.version " + asset["version"].dump() +
+                                   "): firsthit reads glTF 2.0; convert it first (e.g. with glTF-Pipeline)");
+    if (major > 2) throw InputError(file, "asset.version " + asset["version"].dump() + ": firsthit reads glTF 2.0");
+    if (asset.contains("minVersion") && asset["minVersion"].is_string() && asset["minVersion"].get<std::string>() != "2.0")
+        throw InputError(file, "asset.minVersion " + asset["minVersion"].dump() + ": firsthit reads glTF 2.0");
+}
+
 // Checks on the JSON before tinygltf reads it: syntax (with its position),
 // nesting, required extensions, uris, and the sizes it asks for.
 void check_json(const std::string& json, const std::string& file) {
+    if (json.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(file, "empty glTF file (no JSON)");
     int line, column;
     const JsonExcess excess = json_excess(json);
     if (excess.too_deep != std::string::npos) {
@@ -364,6 +386,7 @@ void check_json(const std::string& json, const std::string& file) {
                 position_of(json, at, line, column);
         throw InputError(file, line, column, "JSON: " + what);
     }
+    check_version(j, file);
     check_gltf_schema(j, file);
     auto strings = [&](const char* key) {
         std::vector<std::string> out;

@@ -79,6 +79,19 @@ const Expected kGltf[] = {
     {"glTF2/wrongTypes/badUint.gltf", "baseColorTexture.index: expected a whole number >= 0, got -1"},
 };
 
+// glTF/: the same package's glTF 1.0 files, each refused as one: their
+// first 1.0-shaped field ("scene": "defaultScene", a version of 1) once
+// made the message.
+const Expected kGltf1[] = {
+    {"glTF/BoxTextured-glTF-Binary/BoxTextured.glb", "GLB version 1 (glTF 2.0 is version 2)"},
+    {"glTF/BoxTextured-glTF-Embedded/BoxTextured.gltf", "a glTF 1.0 file (asset.version \"1.0\"): firsthit reads glTF 2.0"},
+    {"glTF/BoxTextured-glTF-MaterialsCommon/BoxTextured.gltf", "a glTF 1.0 file (asset.version \"1.0\")"},
+    {"glTF/BoxTextured-glTF/BoxTextured.gltf", "a glTF 1.0 file (asset.version \"1.0\")"},
+    {"glTF/CesiumMilkTruck/CesiumMilkTruck.gltf", "a glTF 1.0 file (asset.version 1)"},
+    {"glTF/IncorrectVertexArrays/Cube_v1.gltf", "a glTF 1.0 file (asset.version \"1.0\")"},
+    {"glTF/TwoBoxes/TwoBoxes.gltf", "a glTF 1.0 file (asset.version \"1.0\")"},
+};
+
 // OBJ/, PLY/, STL/, OFF/: each mesh file and what it should give, placed
 // as a `type: mesh` surface of a small scene.
 const Expected kMeshFiles[] = {
@@ -195,6 +208,7 @@ void check_model(const std::string& target, const std::string& file, const std::
 TEST(DebianModelsCli, TheTablesListEveryFile) {
     ASSERT_TRUE(fs::is_directory(kModels / "glTF2")) << "install Debian's assimp-testmodels (scripts/setup.sh does)";
     EXPECT_EQ(files_under("glTF2", {".gltf", ".glb"}), listed(std::begin(kGltf), std::end(kGltf)));
+    EXPECT_EQ(files_under("glTF", {".gltf", ".glb"}), listed(std::begin(kGltf1), std::end(kGltf1)));
     std::set<std::string> meshes;
     for (const char* folder : {"OBJ", "PLY", "STL", "OFF"}) meshes.merge(files_under(folder, {}));
     EXPECT_EQ(meshes, listed(std::begin(kMeshFiles), std::end(kMeshFiles)));
@@ -207,6 +221,13 @@ TEST(DebianModelsCli, EveryGltfFileRendersOrIsOneLine) {
         const fs::path png = dir / ("model" + std::to_string(n++) + ".png");
         check_model((kModels / e.file).string(), e.file, e.outcome, png);
     }
+}
+
+TEST(DebianModelsCli, EveryGltf1FileIsOneLineSayingSo) {
+    const fs::path dir = fresh_dir("debian_gltf1");
+    int n = 0;
+    for (const Expected& e : kGltf1)
+        check_model((kModels / e.file).string(), e.file, e.outcome, dir / ("model" + std::to_string(n++) + ".png"));
 }
 
 TEST(DebianModelsCli, EveryMeshFileRendersOrIsOneLine) {

@@ -86,6 +86,25 @@ TEST(GltfHostile, FieldOfTheWrongType) {
             "accessors[0].count: expected a whole number >= 0, got the string \"3\"");
 }
 
+// Another version than 2.0 is named as such, before any field of its own
+// shape is taken for a mistake; an empty file is called empty.
+TEST(GltfHostile, VersionsOtherThan2AndEmptyFiles) {
+    Bin bin;
+    std::string good = gltf_json(triangle_body(bin), bin);
+    auto with_asset = [&](const std::string& asset) {
+        std::string j = good;
+        j.replace(j.find(R"({"version": "2.0"})"), 18, asset);
+        return j;
+    };
+    refused(with_asset(R"({"version": "1.0"})"), "a glTF 1.0 file (asset.version \"1.0\"): firsthit reads glTF 2.0");
+    refused(with_asset(R"({"version": 1})"), "a glTF 1.0 file (asset.version 1)");
+    refused(with_asset(R"({"version": "3.0"})"), "asset.version \"3.0\": firsthit reads glTF 2.0");
+    refused(with_asset(R"({"version": "2.1", "minVersion": "2.1"})"), "asset.minVersion \"2.1\": firsthit reads glTF 2.0");
+    EXPECT_NO_THROW(load_gltf_from_memory(with_asset(R"({"version": "2.1", "minVersion": "2.0"})"), "ok.gltf", "/nonexistent"));
+    refused("", "empty glTF file (no JSON)");
+    refused(" \n\t", "empty glTF file (no JSON)");
+}
+
 TEST(GltfHostile, RequiredExtensionNotImplementedIsNamed) {
     Bin bin;
     refused(gltf_json(triangle_body(bin) + R"(, "extensionsUsed": ["KHR_draco_mesh_compression"],
