@@ -27,8 +27,7 @@ int camera_index(const Scene& scene, const std::string& name, const std::string&
     for (const auto& c : scene.cameras) names.push_back(c.name);
     for (size_t i = 0; i < names.size(); ++i)
         if (names[i] == name) return int(i);
-    const std::string near = closest_match(name, names);
-    throw UsageError("no camera '" + name + "' in " + file + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+    throw UsageError("no camera '" + name + "' in " + file + name_hint(name, names, "its cameras"));
 }
 
 }  // namespace

@@ -44,4 +44,12 @@ std::string closest_match(const std::string& word, const std::vector<std::string
     return best;
 }
 
+std::string name_hint(const std::string& word, const std::vector<std::string>& options, const std::string& what) {
+    if (const std::string near = closest_match(word, options); !near.empty()) return " (did you mean '" + near + "'?)";
+    if (options.empty()) return "";
+    std::string list;
+    for (size_t i = 0; i < options.size() && i < 8; ++i) list += (i ? ", '" : "'") + options[i] + "'";
+    return " (" + what + ": " + list + (options.size() > 8 ? ", ..." : "") + ")";
+}
+
 }  // namespace fh

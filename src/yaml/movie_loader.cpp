@@ -45,7 +45,7 @@ Camera pick_camera(const YamlReader& r, const MapReader& m, const Scene& scene) 
     if (const Camera* cam = scene.find_camera(name)) return *cam;
     std::vector<std::string> known;
     for (const Camera& c : scene.cameras) known.push_back(c.name);
-    fail_undefined(r, node, "camera", name, known);
+    r.fail(node, "undefined camera '" + name + "'" + name_hint(name, known, "the scene's cameras"));
 }
 
 std::vector<std::string> light_names(const Scene& scene) {

@@ -69,7 +69,7 @@ TEST(RenderCli, UsageErrorsExitTwoWithOneLine) {
     } cases[] = {
         {"render " + scene + " --spx 4", "firsthit: error: unknown option '--spx' for 'render' (did you mean '--spp'?); see 'firsthit render --help'\n"},
         {"render " + scene + " --spp 0", "firsthit: error: --spp must be in [1, 4096], got 0\n"},
-        {"render " + scene + " --camera persp", "firsthit: error: no camera 'persp' in " + scene + "\n"},
+        {"render " + scene + " --camera persp", "firsthit: error: no camera 'persp' in " + scene + " (its cameras: 'perspective', 'orthographic')\n"},
         {"render " + scene + " --camera perspectve", "firsthit: error: no camera 'perspectve' in " + scene + " (did you mean 'perspective'?)\n"},
         {"render " + scene + " --frame 3", "firsthit: error: --frame applies to movie files; " + scene + " is a scene\n"},
         {"render " + source_path("animations/movie1.yaml") + " --frame 300", "firsthit: error: --frame must be in [0, 299], got 300\n"},

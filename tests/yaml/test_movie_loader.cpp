@@ -197,6 +197,9 @@ TEST(MovieLoader, ErrorInTheSceneIsReportedAgainstTheScene) {
 TEST(MovieLoader, UndefinedCamera) {
     EXPECT_EQ(movie_error("scene: scene.yaml\ncamera: perp\n"),
               "FILE:2:9: error: undefined camera 'perp' (did you mean 'persp'?)");
+    // Nothing close: the scene's cameras are listed, as --camera lists them.
+    const std::string listed = movie_error("scene: scene.yaml\ncamera: zzz\n");
+    EXPECT_EQ(listed.rfind("FILE:2:9: error: undefined camera 'zzz' (the scene's cameras: 'persp'", 0), 0u) << listed;
 }
 
 TEST(MovieLoader, UndefinedLight) {
