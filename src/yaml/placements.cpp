@@ -47,11 +47,12 @@ public:
         // A byte order mark, as spreadsheets write: not part of the header.
         const size_t start = text_.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
         for (size_t at = start; at < text_.size();) {
-            size_t end = text_.find('\n', at);
+            // Lines end in LF, CR LF, or a lone CR (a spreadsheet's "CSV (Macintosh)").
+            size_t end = text_.find_first_of("\r\n", at);
             if (end == std::string::npos) end = text_.size();
             ++line_;
             const std::string_view line(text_.data() + at, end - at);
-            at = end + 1;
+            at = end + (text_.compare(end, 2, "\r\n") == 0 ? 2 : 1);
             if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;  // blank
             if (header) {
                 read_header(line);

@@ -387,7 +387,9 @@ Transform read_transform(const YamlReader& r, const YAML::Node& node) {
     if (m.has("translate")) t.translate = m.vec3("translate");
     if (const MapReader::Entry* rot = m.find("rotate")) {
         const MapReader q(r, rot->value, "'rotate'", {"axis", "degrees", "radians"});
-        if (q.has("degrees") == q.has("radians"))
+        if (q.has("degrees") && q.has("radians"))
+            r.fail(rot->value, "'rotate' gives its angle twice: 'degrees' or 'radians', not both");
+        if (!q.has("degrees") && !q.has("radians"))
             r.fail(rot->value, "'rotate' needs an angle: 'degrees' or 'radians' (one of them)");
         t.radians = q.has("degrees") ? glm::radians(q.number("degrees")) : q.number("radians");
         t.axis = q.direction("axis");

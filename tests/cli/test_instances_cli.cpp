@@ -125,6 +125,21 @@ TEST(InstancesCli, PlacementsAsSpreadsheetsWriteThem) {
     EXPECT_EQ(dvec3(s.instances[0].to_world[3]), dvec3(1, -2, 3));
     EXPECT_EQ(s.instances[0].to_world[0][0], 0.5);
     EXPECT_EQ(dvec3(s.instances[1].to_world[3]), dvec3(0, 0, 0));
+    // Lines ended by CR LF, or by a lone CR ("CSV (Macintosh)", which once
+    // read as one line: "unknown column 'tz\x0d1'"); a mistake keeps its line.
+    for (const std::string eol : {"\r\n", "\r"}) {
+        std::ofstream(dir / "rows.csv") << "tx,ty,tz" << eol << "1,2,3" << eol << eol << "4,5,6" << eol;
+        const Scene t = load_scene((dir / "scene.yaml").string()).scene;
+        ASSERT_EQ(t.instances.size(), 2u);
+        EXPECT_EQ(dvec3(t.instances[1].to_world[3]), dvec3(4, 5, 6));
+        std::ofstream(dir / "rows.csv") << "tx,ty,tz" << eol << "1,2,3" << eol << "4,5" << eol;
+        try {
+            load_scene((dir / "scene.yaml").string());
+            ADD_FAILURE() << "a short row was read";
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.line(), 3);
+        }
+    }
 }
 
 // A file named by 'meshes:' and by a type: mesh surface is read once.

@@ -78,6 +78,9 @@ TEST(MeshSurface, MistakesAreOneLineNamingTheirFile) {
               "FILE:7:64: error: expected true or false for 'smooth', got 'maybe'");
     EXPECT_EQ(scene_error(kMeshHead + "surfaces:\n" + mesh + "file: meshes/tri.off, transform: {rotate: {axis: [0, 0, 1]}}}\n"),
               "FILE:7:76: error: 'rotate' needs an angle: 'degrees' or 'radians' (one of them)");
+    EXPECT_EQ(scene_error(kMeshHead + "surfaces:\n" + mesh +
+                          "file: meshes/tri.off, transform: {rotate: {axis: [0, 0, 1], degrees: 90, radians: 1}}}\n"),
+              "FILE:7:76: error: 'rotate' gives its angle twice: 'degrees' or 'radians', not both");
     EXPECT_EQ(scene_error(kMeshHead + "surfaces:\n" + mesh + "file: meshes/tri.off, transform: {scale: 0}}\n"),
               "FILE:7:75: error: 'scale' must not be 0 (a number, or one per axis; a negative one mirrors)");
     EXPECT_EQ(scene_error(kMeshHead + "surfaces:\n" + mesh + "file: meshes/tri.off, transform: {shear: 1}}\n"),
