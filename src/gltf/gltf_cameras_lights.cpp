@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "gltf/gltf_model.h"
+#include "render/settings.h"
 #include "scene/camera.h"
 #include "text/input_error.h"
 
@@ -19,19 +20,29 @@ Camera gltf_camera(const tinygltf::Camera& c, int index, int node, const std::st
     cam.name = c.name.empty() ? "camera " + std::to_string(index) : c.name;
     cam.node = node;
     cam.width = 800;
+    // 800 wide and this tall, within the image limits: a file's extreme
+    // aspect ratio (1e-9 once made an 800 x 16384 image without a word) is
+    // an error, not a clamp.
+    auto height_for = [&](double aspect, const std::string& what) {
+        const double h = std::round(800 / aspect);
+        if (!(h >= 1 && h <= Limits::max_image_side))
+            fail(cam.name + ": " + what + " would make the image 800 wide and " + std::to_string(std::llround(std::min(h, 1e18))) +
+                 " tall (1 to " + std::to_string(Limits::max_image_side) + ")");
+        return int(h);
+    };
     if (c.type == "orthographic") {
         const double xmag = c.orthographic.xmag, ymag = c.orthographic.ymag;
         if (!(xmag > 0) || !(ymag > 0) || !std::isfinite(xmag) || !std::isfinite(ymag))
             fail(cam.name + ": xmag and ymag must be > 0");
         cam.projection = Projection::orthographic;
         cam.half_height = ymag;
-        cam.height = std::clamp(int(std::lround(800 * ymag / xmag)), 1, 16384);
+        cam.height = height_for(xmag / ymag, "xmag / ymag");
     } else if (c.type == "perspective") {
         const double yfov = c.perspective.yfov, aspect = c.perspective.aspectRatio;
         if (!(yfov > 0 && yfov < std::numbers::pi)) fail(cam.name + ": yfov must be in (0, pi)");
         cam.projection = Projection::perspective;
         cam.projection_distance = 10 / std::tan(yfov / 2);
-        cam.height = aspect > 0 && std::isfinite(aspect) ? std::clamp(int(std::lround(800 / aspect)), 1, 16384) : 600;
+        cam.height = aspect > 0 && std::isfinite(aspect) ? height_for(aspect, "aspectRatio") : 600;
     } else {
         fail(cam.name + ": camera type '" + c.type + "' is not perspective or orthographic");
     }

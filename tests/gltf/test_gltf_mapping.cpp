@@ -70,6 +70,22 @@ TEST(GltfCameras, PerspectiveAndOrthographicByTheDocumentedFormula) {
     expect_camera(f.scene.cameras[2], Projection::orthographic, 10, 3, 800, 600);  // d unused: the default
 }
 
+// An image 800 wide must be 1 to 16384 tall: an aspect ratio past that is
+// the file's mistake, said so (1e-9 once made an 800 x 16384 image).
+TEST(GltfCameras, AnAspectRatioPastTheImageLimitsIsAnError) {
+    auto with = [](const std::string& camera) {
+        return gltf_json(R"("scenes": [{"nodes": [0]}], "nodes": [{"camera": 0}], "cameras": [)" + camera + "]");
+    };
+    expect_input_error([&] { load(with(R"({"type": "perspective", "perspective": {"yfov": 1, "aspectRatio": 1e-9, "znear": 0.1}})")); },
+                       "t.gltf", "camera 0: aspectRatio would make the image 800 wide and 800000000000 tall (1 to 16384)");
+    expect_input_error([&] { load(with(R"({"type": "perspective", "perspective": {"yfov": 1, "aspectRatio": 2000, "znear": 0.1}})")); },
+                       "t.gltf", "camera 0: aspectRatio would make the image 800 wide and 0 tall (1 to 16384)");
+    expect_input_error([&] { load(with(R"({"type": "orthographic", "orthographic": {"xmag": 1, "ymag": 100, "znear": 0.1, "zfar": 9}})")); },
+                       "t.gltf", "camera 0: xmag / ymag would make the image 800 wide and 80000 tall (1 to 16384)");
+    EXPECT_EQ(load(with(R"({"type": "perspective", "perspective": {"yfov": 1, "aspectRatio": 0.0488281, "znear": 0.1}})"))
+                  .scene.cameras[0].height, 16384);
+}
+
 TEST(GltfCameras, ACameraLooksDownItsNodesMinusZWithItsPlusYUp) {
     // Parent moves (1,2,0), child (0,0,3) turned 90° about y (z -> x, x -> -z):
     // eye (1,2,3), looking R(0,0,-1) = (-1,0,0), up R(0,1,0) = (0,1,0).
