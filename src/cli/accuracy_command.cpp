@@ -100,6 +100,9 @@ int run_accuracy(const Args& args) {
     options.runs = args.integer("--runs", 3, 1, 1000);
     options.reference_spp = args.integer("--reference-spp", 256, 1, Limits::max_samples_per_pixel);
     options.max_spp = args.integer("--max-spp", 64, 1, Limits::max_samples_per_pixel);
+    if (options.reference_spp < options.max_spp)
+        throw UsageError("--reference-spp " + std::to_string(options.reference_spp) + " is below --max-spp " +
+                         std::to_string(options.max_spp) + ": the reference must have the most samples");
     ThreadPool pool(args.integer("--threads", 0, 0, 1024));
 
     const bool tty = isatty(STDERR_FILENO);

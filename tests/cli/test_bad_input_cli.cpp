@@ -254,6 +254,8 @@ TEST(BadInputCli, OutputsThatWouldReplaceAnInputOrComeTooLateAndEmptyNames) {
          "firsthit: error: --plot DIR/p.xyz: the plot's name must end in .png"},
         {"accuracy_plot_without_csv", {}, "accuracy DIR/scene.yaml --plot DIR/p.png" + sweep,
          "firsthit: error: --plot needs --csv (gnuplot reads the table from it)"},
+        {"accuracy_reference_below_the_sweep", {}, "accuracy DIR/scene.yaml --resolution 8x8 --max-spp 64 --reference-spp 2",
+         "firsthit: error: --reference-spp 2 is below --max-spp 64: the reference must have the most samples"},
         {"accuracy_csv_missing_folder", {}, "accuracy DIR/scene.yaml --csv DIR/missing/t.csv" + sweep,
          "DIR/missing/t.csv: error: cannot write: folder 'DIR/missing' does not exist"},
         {"export_over_its_mesh", {with_ply, {"tri.ply", ply}}, "export DIR/bad.yaml -o DIR/tri.ply",
