@@ -108,6 +108,8 @@ Camera read_camera(const YamlReader& r, const MapReader::Entry& entry) {
 }
 
 void read_cameras(const YamlReader& r, const MapReader& top, Scene& scene) {
+    // The cameras of the glTF files it places may be all a scene has.
+    if (!top.has("cameras") && !scene.cameras.empty()) return;
     const YAML::Node node = top.value("cameras");
     const MapReader names(r, node, "'cameras'", {});
     if (names.entries().empty()) r.fail(node, "'cameras' must name at least one camera");

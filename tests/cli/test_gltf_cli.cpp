@@ -229,6 +229,12 @@ TEST(GltfCli, AFilePlacedTwiceNamesItsCamerasAndLightsByItsSurface) {
     EXPECT_EQ(bare.err, "firsthit: error: no camera 'front' in " + (dir / "two.yaml").string() +
                             " (did you mean 'a/front'?)\n");
 
+    // Its cameras may be all the scene has: no 'cameras:' key needed then.
+    std::ofstream(dir / "no_cameras.yaml") << "surfaces:\n  - {type: gltf, name: a, file: " << demo << "}\n";
+    const auto only = run_firsthit("info " + (dir / "no_cameras.yaml").string());
+    ASSERT_EQ(only.status, 0) << only.err;
+    EXPECT_NE(only.out.find("\ncameras: a/front\n"), std::string::npos) << only.out;
+
     std::ofstream(dir / "unnamed.yaml") << head << "  - {type: gltf, file: " << demo << "}\n"
                                         << "  - {type: gltf, file: " << demo << "}\n";
     const auto twice = run_firsthit("info " + (dir / "unnamed.yaml").string());
