@@ -41,7 +41,7 @@ Job movie_job(const Args& args) {
     what.movie_camera_note = "its camera is set in the file";
     what.animation = args.value("--animation");
     if (args.has("--fps")) what.fps = args.number("--fps", 30, 1e-3, 1000);
-    if (args.has("--exposure")) what.exposure = args.number("--exposure", 1, 0, 1e6);
+    if (args.has("--exposure")) what.exposure = args.number("--exposure", 1, 0, kMaxExposure);
     return load_job(what);
 }
 

@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "gltf/gltf_loader.h"
 #include "text/input_error.h"
 
 namespace fh {
@@ -64,7 +65,7 @@ JobRequest job_request_from_args(const Args& args) {
     request.size = size_from_args(args);
     request.animation = args.value("--animation");
     if (args.has("--fps")) request.fps = args.number("--fps", 30, 1e-3, 1000);
-    if (args.has("--exposure")) request.exposure = args.number("--exposure", 1, 0, 1e6);
+    if (args.has("--exposure")) request.exposure = args.number("--exposure", 1, 0, kMaxExposure);
     return request;
 }
 

@@ -26,7 +26,9 @@ struct GltfFile {
     std::vector<std::string> warnings;      // one line each, "FILE: warning: ..."
 };
 
-// exposure: multiplies every light's intensity (1: the documented units).
+// exposure: multiplies every light's intensity (1: the documented units),
+// 0 to kMaxExposure (--exposure and a surface's `exposure:` alike).
+inline constexpr double kMaxExposure = 1e6;
 GltfFile load_gltf(const std::string& path, double exposure = 1);
 GltfFile load_gltf_from_memory(const std::string& bytes, const std::string& file, const std::string& folder,
                                double exposure = 1);

@@ -284,6 +284,7 @@ private:
         if (m.has("transform")) named.transform = read_transform(r_, m.value("transform"));
         check_usable(m, place.world * named.transform.matrix());
         const double exposure = m.has("exposure") ? m.number_at_least("exposure", 0) : 1.0;
+        if (exposure > kMaxExposure) r_.fail(m.value("exposure"), "'exposure' must be at most 1e6 (as --exposure)");
         GltfFile file = load_gltf(relative(m, "file").string(), exposure);
         if (warnings_) warnings_->insert(warnings_->end(), file.warnings.begin(), file.warnings.end());
         named.index = scene_.groups.size();  // add_gltf's first group: the placement
