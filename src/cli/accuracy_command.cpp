@@ -83,8 +83,10 @@ unset multiplot
 void check_outputs(const Args& args) {
     const auto csv = args.value("--csv"), png = args.value("--plot");
     if (png && !csv) throw UsageError("--plot needs --csv (gnuplot reads the table from it)");
-    if (csv && lowercase_extension(*csv) != ".csv") throw UsageError("--csv " + *csv + ": the table's name must end in .csv");
-    if (png && lowercase_extension(*png) != ".png") throw UsageError("--plot " + *png + ": the plot's name must end in .png");
+    if (csv && lowercase_extension(*csv) != ".csv")
+        throw UsageError("--csv " + *csv + ": the table's name must end in .csv");
+    if (png && lowercase_extension(*png) != ".png")
+        throw UsageError("--plot " + *png + ": the plot's name must end in .png");
     for (const auto& out : {csv, png})
         if (out) check_output_file(*out);
 }

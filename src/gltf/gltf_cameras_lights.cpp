@@ -26,8 +26,9 @@ Camera gltf_camera(const tinygltf::Camera& c, int index, int node, const std::st
     auto height_for = [&](double aspect, const std::string& what) {
         const double h = std::round(800 / aspect);
         if (!(h >= 1 && h <= Limits::max_image_side))
-            fail(cam.name + ": " + what + " would make the image 800 wide and " + std::to_string(std::llround(std::min(h, 1e18))) +
-                 " tall (1 to " + std::to_string(Limits::max_image_side) + ")");
+            fail(cam.name + ": " + what + " would make the image 800 wide and " +
+                 std::to_string(std::llround(std::min(h, 1e18))) + " tall (1 to " +
+                 std::to_string(Limits::max_image_side) + ")");
         return int(h);
     };
     if (c.type == "orthographic") {

@@ -349,7 +349,8 @@ void check_version(const nlohmann::json& j, const std::string& file) {
         throw InputError(file, "a glTF 1.0 file (asset.version " + asset["version"].dump() +
                                    "): firsthit reads glTF 2.0; convert it first (e.g. with glTF-Pipeline)");
     if (major > 2) throw InputError(file, "asset.version " + asset["version"].dump() + ": firsthit reads glTF 2.0");
-    if (asset.contains("minVersion") && asset["minVersion"].is_string() && asset["minVersion"].get<std::string>() != "2.0")
+    if (asset.contains("minVersion") && asset["minVersion"].is_string() &&
+        asset["minVersion"].get<std::string>() != "2.0")
         throw InputError(file, "asset.minVersion " + asset["minVersion"].dump() + ": firsthit reads glTF 2.0");
 }
 
@@ -458,7 +459,8 @@ tinygltf::Model parse_gltf_model(const std::string& bytes, const std::string& fi
 }
 
 tinygltf::Model read_gltf_model(const std::string& path, std::vector<std::string>& warnings) {
-    if (const std::string why = why_unreadable(path); !why.empty()) throw InputError(path, "cannot read file: " + why);
+    if (const std::string why = why_unreadable(path); !why.empty())
+        throw InputError(path, "cannot read file: " + why);
     std::error_code ec;
     const auto size = fs::file_size(path, ec);
     if (ec) throw InputError(path, "cannot read file");

@@ -131,7 +131,8 @@ private:
 
 // The file must exist, be a regular file and be readable; returns its size.
 std::uintmax_t check_file(const std::string& path) {
-    if (const std::string why = why_unreadable(path); !why.empty()) throw InputError(path, "cannot open mesh file: " + why);
+    if (const std::string why = why_unreadable(path); !why.empty())
+        throw InputError(path, "cannot open mesh file: " + why);
     std::error_code ec;
     const std::uintmax_t size = fs::file_size(path, ec);
     if (ec) throw InputError(path, "cannot open mesh file: " + lowercase(ec.message()));

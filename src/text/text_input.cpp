@@ -67,7 +67,8 @@ void check_input_text(const std::string& file, const std::string& text, std::siz
 std::string read_input_file(const std::string& path, std::size_t max_bytes) {
     // Opening a folder succeeds on Linux and then reads nothing; a device or a
     // pipe may never end. Say why instead.
-    if (const std::string why = why_unreadable(path); !why.empty()) throw InputError(path, "cannot read file: " + why);
+    if (const std::string why = why_unreadable(path); !why.empty())
+        throw InputError(path, "cannot read file: " + why);
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0)
         throw InputError(path, "cannot read file: " + lowercase_first(std::strerror(errno)));

@@ -318,7 +318,8 @@ private:
     std::vector<std::string*> renamed_from(size_t cameras, size_t suns, size_t spots) {
         std::vector<std::string*> names;
         for (size_t k = cameras; k < scene_.cameras.size(); ++k) names.push_back(&scene_.cameras[k].name);
-        for (size_t k = suns; k < scene_.directional_lights.size(); ++k) names.push_back(&scene_.directional_lights[k].name);
+        for (size_t k = suns; k < scene_.directional_lights.size(); ++k)
+            names.push_back(&scene_.directional_lights[k].name);
         for (size_t k = spots; k < scene_.spot_lights.size(); ++k) names.push_back(&scene_.spot_lights[k].name);
         return names;
     }
