@@ -87,7 +87,9 @@ else
   # A folder of frame_NNNN.png, or a pattern: PREFIX %0Nd|%d|#### SUFFIX.
   dir=$frames_arg prefix=frame_ suffix=.png
   base=${frames_arg##*/}
-  if [[ $base =~ ^(.*)(%0?[0-9]*d|#+)(.*)$ ]]; then
+  # (The first number in the name: a greedy prefix once took '###' of
+  # '####' for itself. An existing folder is a folder, '#' in its name or not.)
+  if [[ ! -d $frames_arg && $base =~ ^([^%#]*)(%0?[0-9]*d|#+)(.*)$ ]]; then
     prefix=${BASH_REMATCH[1]} suffix=${BASH_REMATCH[3]}
     [[ $prefix != *[%#]* && $suffix != *[%#]* ]] || die "$frames_arg has two frame numbers; give one (%04d or ####)"
     [[ $frames_arg == */* ]] && dir=${frames_arg%/*} || dir=.
@@ -177,12 +179,22 @@ else
   fi
   frames=("$first")
   # ffmpeg reads the frames by its own pattern: a '%' in the name is '%%'.
-  input=(-framerate "$fps" -i "$dir/${prefix//%/%%}%0${digits}d${suffix//%/%%}")
-  what="$n frames"
+  input=(-framerate "$fps" -i "${dir//%/%%}/${prefix//%/%%}%0${digits}d${suffix//%/%%}")
+  what="$n frame$( ((n == 1)) || echo s)"
   # The size, from the first frame's IHDR chunk (bytes 16-23, big-endian).
   read -r width height < <(od -An -tu1 -j16 -N8 "$dir/${frames[0]}" |
     awk '{print ($1*16777216 + $2*65536 + $3*256 + $4), ($5*16777216 + $6*65536 + $7*256 + $8)}') || true
   [[ ${width:-0} -gt 0 && ${height:-0} -gt 0 ]] || die "$dir/${frames[0]} is not a PNG file"
+  # Every frame a PNG of the first one's size: ffmpeg would scale another
+  # size to fit without a word (and -xerror below stops at a frame whose
+  # data is broken).
+  for ((i = 1; i < n; i++)); do
+    f=$(name_of "$i")
+    read -r sig w h < <(od -An -tu1 -N24 "$dir/$f" | tr -s ' \n' ' ' |
+      awk '{print $1 "-" $2 "-" $3 "-" $4, ($17*16777216 + $18*65536 + $19*256 + $20), ($21*16777216 + $22*65536 + $23*256 + $24)}') || true
+    [[ ${sig:-} == 137-80-78-71 ]] || die "$dir/$f is not a PNG file"
+    [[ $w == "$width" && $h == "$height" ]] || die "$dir/$f is ${w}x${h}, the frames before it ${width}x${height}"
+  done
 fi
 
 filter=() codec=()
@@ -206,7 +218,6 @@ esac
 [[ -z $fps_warning ]] || echo "encode.sh: warning: $fps_warning" >&2
 # The muxer is named (-f): the temporary's extension does not pick it.
 tmp="$outdir/.$name.tmp-$$.$ext"
-trap 'rm -f "$tmp"' EXIT
 # ffmpeg runs in the background and is waited for, so that a signal to this
 # script stops it too, and the file goes only once ffmpeg has stopped: a
 # stopping ffmpeg still finishes its output, and may even create it, after
@@ -222,13 +233,26 @@ stop() {
 trap 'stop 130' INT
 trap 'stop 143' TERM
 trap 'stop 129' HUP
-ffmpeg -hide_banner -loglevel error -nostdin -y "${input[@]}" \
-  "${filter[@]}" "${codec[@]}" -f "$ext" "$tmp" <&0 &
+# -xerror: a frame ffmpeg cannot decode stops it (it used to be skipped, the
+# movie one frame short, and the run a success). Its messages are kept for
+# the one line said of a failure.
+log="$outdir/.$name.log-$$"
+trap 'rm -f "$tmp" "$log"' EXIT
+ffmpeg -hide_banner -loglevel error -nostdin -y -xerror "${input[@]}" \
+  "${filter[@]}" "${codec[@]}" -f "$ext" "$tmp" <&0 2>"$log" &
 encoder=$!
-wait "$encoder"
+status=0
+wait "$encoder" || status=$?
 trap - INT TERM HUP
-# (ffmpeg may end well having written nothing: a GIF of no frames.)
-[[ -s $tmp ]] || { echo "encode.sh: error: ffmpeg wrote nothing into $out: no frames?" >&2; exit 1; }
+if ((status != 0)); then
+  echo "encode.sh: error: ffmpeg stopped (exit $status) encoding $what: $(grep -m1 . "$log" || echo 'no message')" >&2
+  exit 1
+fi
+# (ffmpeg may end well having written nothing: no frames on standard input.)
+frames_out=$(ffprobe -v error -count_packets -select_streams v:0 -show_entries stream=nb_read_packets \
+  -of csv=p=0 -f "$ext" "$tmp" 2>/dev/null || true)
+[[ -s $tmp && ${frames_out:-0} -gt 0 ]] || { echo "encode.sh: error: ffmpeg wrote no frame into $out: no frames?" >&2; exit 1; }
 mv -f "$tmp" "$out"
+rm -f "$log"
 trap - EXIT
 echo "encoded $what at $fps fps into $out ($label)"

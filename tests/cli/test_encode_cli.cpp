@@ -227,6 +227,55 @@ TEST(EncodeCli, TooFewFramesAreRefusedUntilResumed) {
     EXPECT_EQ(probe_entries(dir / "x.webm", "stream=nb_read_frames"), "nb_read_frames=12\n");
 }
 
+// A frame that is no PNG, or of another size, is refused before ffmpeg
+// runs; one whose data is cut short stops ffmpeg (-xerror) in one line.
+// ffmpeg once skipped the first and scaled the second: exit 0, a movie a
+// frame short or stretched. Nothing is written either way, and no raw
+// frames at all is no video.
+TEST(EncodeCli, BrokenFramesAndNoFramesAreRefused) {
+    const fs::path dir = tiny_movie("encode_broken");  // 12 frames, 64 x 64
+    const fs::path frames = render_frames(dir);
+    const std::string out = " " + (dir / "x.mp4").string() + " --fps 12";
+    const std::string good = slurp(frames / "frame_0004.png");
+    std::ofstream(frames / "frame_0004.png") << "junk\n";
+    auto r = encode(frames.string() + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "encode.sh: error: " + (frames / "frame_0004.png").string() + " is not a PNG file\n");
+    ASSERT_EQ(run_firsthit("render " + (dir / "tiny.yaml").string() + " --frame 4 --resolution 32x32 -o " +
+                           (frames / "frame_0004.png").string()).status, 0);
+    r = encode(frames.string() + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "encode.sh: error: " + (frames / "frame_0004.png").string() + " is 32x32, the frames before it 64x64\n");
+    std::ofstream(frames / "frame_0004.png", std::ios::binary) << good.substr(0, 200);
+    r = encode(frames.string() + out);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.err.rfind("encode.sh: error: ffmpeg stopped (exit 1) encoding 12 frames: ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    r = run_script("encode.sh", "--raw 64x64" + out + " </dev/null");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(r.err, "encode.sh: error: ffmpeg wrote no frame into " + (dir / "x.mp4").string() + ": no frames?\n");
+    EXPECT_EQ(files_in(dir), (std::vector<std::string>{"f", "scene.yaml", "tiny.yaml"}));  // nothing written
+}
+
+// Blender's pattern, whatever its run of '#' (a greedy prefix once took
+// '###' of 'b_####.png' and called it two numbers), and folders whose names
+// hold '%' or '#'.
+TEST(EncodeCli, PatternsAndFolderNamesAsUsersWriteThem) {
+    const fs::path dir = tiny_movie("encode_names");
+    ASSERT_EQ(run_firsthit("frames " + (dir / "tiny.yaml").string() + " --quiet --out '" +
+                           (dir / "p" / "b_####.png").string() + "'").status, 0);
+    auto r = encode("'" + (dir / "p" / "b_####.png").string() + "' " + (dir / "p.mp4").string() + " --fps 12");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(probe_entries(dir / "p.mp4", "stream=nb_read_frames"), "nb_read_frames=12\n");
+    for (const std::string folder : {"100%", "take#1"}) {
+        fs::create_directories(dir / folder);
+        fs::copy_file(dir / "p" / "b_0000.png", dir / folder / "frame_0000.png");
+        r = encode("'" + (dir / folder).string() + "' " + (dir / "q.gif").string() + " --fps 12");
+        ASSERT_EQ(r.status, 0) << folder << ": " << r.err;
+        EXPECT_EQ(r.out, "encoded 1 frame at 12 fps into " + (dir / "q.gif").string() + " (GIF)\n");
+    }
+}
+
 TEST(EncodeCli, RawFramesTakeTheSameFormats) {
     const fs::path dir = tiny_movie("encode_raw");
     const std::string movie = (dir / "tiny.yaml").string();
