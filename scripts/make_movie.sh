@@ -21,11 +21,18 @@ here=$(cd "$(dirname "$0")" && pwd)
 firsthit=${FIRSTHIT:-$here/../build/firsthit}
 usage="usage: scripts/make_movie.sh MOVIE.yaml [OUTPUT_DIR] [--encoder-threads N] [--raw-pix-fmt P] [--quiet]"
 positional=() encode_options=() frames_options=()
+die() { echo "make_movie.sh: error: $*" >&2; exit 2; }
+# Everything is checked -- options, then the movie, every frame of it (firsthit
+# info) -- before the old frames are touched: a mistake once left the last
+# good render's folder half emptied.
 while [[ $# -gt 0 ]]; do
   case $1 in
-    --encoder-threads) [[ $# -ge 2 ]] || { echo "$usage" >&2; exit 2; }; encode_options+=(--threads "$2"); shift 2 ;;
-    --raw-pix-fmt) [[ $# -ge 2 ]] || { echo "$usage" >&2; exit 2; }
-                   frames_options+=(--raw-pix-fmt "$2"); encode_options+=(--pix-fmt "$2"); shift 2 ;;
+    --encoder-threads)
+      [[ $# -ge 2 && $2 =~ ^[1-9][0-9]*$ ]] || die "--encoder-threads needs a whole number > 0, got '${2:-}'"
+      encode_options+=(--threads "$2"); shift 2 ;;
+    --raw-pix-fmt)
+      [[ $# -ge 2 && ($2 == rgb24 || $2 == yuv420p) ]] || die "--raw-pix-fmt is rgb24 or yuv420p, got '${2:-}'"
+      frames_options+=(--raw-pix-fmt "$2"); encode_options+=(--pix-fmt "$2"); shift 2 ;;
     --quiet) frames_options+=(--quiet); shift ;;
     -*) echo "make_movie.sh: error: unknown option '$1'" >&2; echo "$usage" >&2; exit 2 ;;
     *) positional+=("$1"); shift ;;
@@ -35,12 +42,12 @@ done
 movie=${positional[0]} outdir=${positional[1]:-output}
 name=$(basename "$movie")
 name=${name%.*}  # movie.yaml, model.gltf, model.glb: the name without its extension
-info=$("$firsthit" info "$movie")
+info=$("$firsthit" info "$movie")  # its one line on a mistake, then exit 2
 fps=$(sed -n 's/^fps: //p' <<<"$info")
+[[ -n $fps ]] || die "$movie is a scene, not a movie (a movie file has a 'scene:' key)"
 size="$(sed -n 's/^width: //p' <<<"$info")x$(sed -n 's/^height: //p' <<<"$info")"
 
 start=$(date +%s.%N)
-rm -rf "${outdir:?}/$name"
 mkdir -p "$outdir"
 # The movie appears under its name only if both sides succeeded (pipefail):
 # a render that fails half-way leaves no half movie.
@@ -53,7 +60,8 @@ trap 'rm -f "$tmp"' EXIT
 trap 'exit 130' INT
 trap 'exit 143' TERM
 trap 'exit 129' HUP
-"$firsthit" frames "$movie" --out "$outdir/$name" --raw-video - "${frames_options[@]}" \
+# --clean: the frames of an earlier render of it go first (the folder's other files stay).
+"$firsthit" frames "$movie" --out "$outdir/$name" --clean --raw-video - "${frames_options[@]}" \
   | "$here/encode.sh" --raw "$size" "$tmp" --fps "$fps" "${encode_options[@]}" >/dev/null
 mv -f "$tmp" "$outdir/$name.mp4"
 trap - EXIT

@@ -321,6 +321,35 @@ TEST(MakeMovies, AFailingMovieFailsTheRunAndLeavesNoMp4) {
     EXPECT_TRUE(fs::exists(dir / "out" / "good.mp4"));  // the other movie is not harmed
 }
 
+// make_movie.sh checks its options and every frame of the movie (firsthit
+// info) before it touches the last render: a bad option or a value that
+// goes wrong at frame 4 once left that render's folder half emptied. Each
+// is one line, exit 2, the old frames and movie kept.
+TEST(MakeMovies, MistakesAreOneLineAndKeepTheLastRender) {
+    const fs::path dir = small_movie("make_movie_checks", 32, 32, 6, "m.yaml");
+    const std::string out = " " + (dir / "out").string();
+    ASSERT_EQ(run_script("make_movie.sh", (dir / "m.yaml").string() + out + " --quiet").status, 0);
+    const std::string movie = slurp(dir / "m.yaml");
+    const std::string frame_3 = slurp(dir / "out" / "m" / "frame_0003.png"), mp4 = slurp(dir / "out" / "m.mp4");
+    std::ofstream(dir / "m.yaml") << movie << "  lights.ambient.intensity: {keyframes: [{frame: 0, value: 1}, "
+                                             "{frame: 3, value: 0.001}, {frame: 5, value: 0.001}], interpolation: catmull_rom}\n";
+    const std::string bad_frame = run_firsthit("info " + (dir / "m.yaml").string()).err;
+    EXPECT_NE(bad_frame.find(" at frame 4; it must be >= 0"), std::string::npos) << bad_frame;
+    for (const auto& [args, line] : std::vector<std::pair<std::string, std::string>>{
+             {"m.yaml" + out, bad_frame},
+             {"scene.yaml" + out, "make_movie.sh: error: " + (dir / "scene.yaml").string() +
+                                      " is a scene, not a movie (a movie file has a 'scene:' key)\n"},
+             {"m.yaml" + out + " --encoder-threads 0", "make_movie.sh: error: --encoder-threads needs a whole number > 0, got '0'\n"},
+             {"m.yaml" + out + " --raw-pix-fmt rgb", "make_movie.sh: error: --raw-pix-fmt is rgb24 or yuv420p, got 'rgb'\n"}}) {
+        const auto r = run_script("make_movie.sh", (dir / args).string());
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_EQ(r.err, line) << args;
+        EXPECT_EQ(frames_in(dir / "out" / "m").size(), 6u) << args;
+        EXPECT_EQ(slurp(dir / "out" / "m" / "frame_0003.png"), frame_3) << args;
+        EXPECT_EQ(slurp(dir / "out" / "m.mp4"), mp4) << args;
+    }
+}
+
 TEST(MakeMovies, TermStopsEveryRendererAndEncoderAndLeavesNoMp4) {
     // Two movies slow enough to be caught in the middle.
     const std::string slow = "render: {samples_per_pixel: 8}\n";
