@@ -1,5 +1,7 @@
 #include "anim/property.h"
 
+#include "render/settings.h"
+
 #include <cmath>
 
 #include "scene/instance.h"
@@ -24,7 +26,7 @@ std::vector<PropertyName> camera_properties(Projection projection) {
 
 std::vector<PropertyName> light_properties(LightKind kind) {
     std::vector<PropertyName> p = {{"on", Property::light_on, ValueKind::flag},
-                                   {"intensity", Property::light_intensity, ValueKind::non_negative},
+                                   {"intensity", Property::light_intensity, ValueKind::strength},
                                    {"color", Property::light_color, ValueKind::color}};
     if (kind != LightKind::ambient) p.push_back({"direction", Property::light_direction, ValueKind::direction});
     if (kind == LightKind::spot) {
@@ -38,7 +40,7 @@ std::vector<PropertyName> surface_properties(SurfaceKind kind) {
     switch (kind) {
     case SurfaceKind::sphere:
         return {{"center", Property::sphere_center, ValueKind::point},
-                {"radius", Property::sphere_radius, ValueKind::positive}};
+                {"radius", Property::sphere_radius, ValueKind::radius}};
     case SurfaceKind::plane:
         return {{"normal", Property::plane_normal, ValueKind::direction},
                 {"distance", Property::plane_distance, ValueKind::number}};
@@ -56,9 +58,9 @@ std::vector<PropertyName> material_properties() {
             {"ambient_color", Property::material_ambient_color, ValueKind::color},
             {"diffuse_color", Property::material_diffuse_color, ValueKind::color},
             {"specular_color", Property::material_specular_color, ValueKind::color},
-            {"ambient", Property::material_ambient, ValueKind::non_negative},
-            {"diffuse", Property::material_diffuse, ValueKind::non_negative},
-            {"specular", Property::material_specular, ValueKind::non_negative},
+            {"ambient", Property::material_ambient, ValueKind::strength},
+            {"diffuse", Property::material_diffuse, ValueKind::strength},
+            {"specular", Property::material_specular, ValueKind::strength},
             {"phong_exponent", Property::material_phong_exponent, ValueKind::non_negative},
             {"reflectivity", Property::material_reflectivity, ValueKind::unit_interval}};
 }
@@ -154,6 +156,10 @@ std::string check_value(const Target& t, const dvec3& v) {
     switch (t.kind) {
     case ValueKind::positive: return v.x > 0 ? "" : "it must be > 0";
     case ValueKind::non_negative: return v.x >= 0 ? "" : "it must be >= 0";
+    case ValueKind::strength:
+        return v.x < 0 ? "it must be >= 0" : v.x > Limits::max_strength ? "it must be at most 1e12" : "";
+    case ValueKind::radius:
+        return !(v.x > 0) ? "it must be > 0" : v.x > Limits::max_radius ? "it must be at most 1e12" : "";
     case ValueKind::unit_interval: return v.x >= 0 && v.x <= 1 ? "" : "it must be in 0..1";
     case ValueKind::direction: return max_abs_component(v) > 0 ? "" : "a direction must not be zero";
     case ValueKind::color: return v.x >= 0 && v.y >= 0 && v.z >= 0 ? "" : "a colour must be >= 0";

@@ -25,6 +25,8 @@ enum class ValueKind {
     number,        // any finite number
     positive,      // > 0
     non_negative,  // >= 0
+    strength,      // 0 .. Limits::max_strength (an intensity; a material's ambient, diffuse, specular)
+    radius,        // > 0, at most Limits::max_radius
     unit_interval, // 0 .. 1
     point,         // any finite vector
     direction,     // a non-zero vector

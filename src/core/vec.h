@@ -49,6 +49,19 @@ inline T max_abs_component(const Vec3<T>& v) {
     return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
 }
 
+// v times the power of two that brings its largest component into [1, 2):
+// the same direction to the bit (a power of two scales exactly), and
+// nothing computed from it -- a length, a cross product -- under- or
+// overflows. A direction of 1e-300 once made every camera ray NaN. v itself
+// when it is zero or not finite.
+template <typename T>
+inline Vec3<T> power_of_two_scaled(const Vec3<T>& v) {
+    const T m = max_abs_component(v);
+    if (!(m > 0) || !std::isfinite(m)) return v;
+    const int e = std::ilogb(m);
+    return {std::scalbn(v.x, -e), std::scalbn(v.y, -e), std::scalbn(v.z, -e)};
+}
+
 // v / |v|, scaled first so that huge or tiny components neither overflow
 // nor underflow in the length; the zero vector for a zero or non-finite v.
 template <typename T>

@@ -60,6 +60,8 @@ void add_gltf_light(const tinygltf::Light& l, int index, int node, double exposu
     const dvec3 color = 255.0 * glm::clamp(vec3_or(l.color, dvec3(1)), 0.0, 1.0);
     if (!(l.intensity >= 0) || !std::isfinite(l.intensity)) fail(name + ": intensity must be >= 0");
     const double intensity = exposure * l.intensity / 255;
+    if (intensity > Limits::max_strength)
+        fail(name + ": intensity " + std::to_string(l.intensity) + " (times exposure, / 255) is past the limit of 1e12");
     if (l.type == "directional") {
         DirectionalLight<double> d;
         d.name = name;

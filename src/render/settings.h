@@ -18,6 +18,12 @@ struct Limits {
     static constexpr int max_image_side = 16384;
     static constexpr int max_samples_per_pixel = 4096;
     static constexpr int max_depth = 64;
+    // The largest light intensity and material strength (ambient, diffuse,
+    // specular) and sphere or disk radius a file may give: every product
+    // the tracer forms of them stays finite, in float too. (1e308 once made
+    // every pixel NaN; a radius of 1e155 a sphere that vanished.)
+    static constexpr double max_strength = 1e12;
+    static constexpr double max_radius = 1e12;
 };
 
 // The effects of the report's shading (docs/model.md section 4).

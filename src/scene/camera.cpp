@@ -4,7 +4,10 @@
 
 namespace fh {
 
-CameraBasis camera_basis(const dvec3& look_at, const dvec3& up) {
+CameraBasis camera_basis(const dvec3& look_at_as_given, const dvec3& up_as_given) {
+    // (Scaled by powers of two: the same basis to the bit for everyday
+    // vectors, and none of NaN for tiny or huge ones.)
+    const dvec3 look_at = power_of_two_scaled(look_at_as_given), up = power_of_two_scaled(up_as_given);
     CameraBasis b;
     b.w = glm::normalize(-look_at);
     dvec3 side = glm::cross(up, b.w);

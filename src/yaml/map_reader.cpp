@@ -75,6 +75,12 @@ double MapReader::number_at_least(const std::string& key, double min) const {
 }
 
 double MapReader::positive(const std::string& key) const { return reader_.positive(value(key), key); }
+double MapReader::number_up_to(const std::string& key, double min, double max) const {
+    return reader_.number_up_to(value(key), key, min, max);
+}
+double MapReader::positive_up_to(const std::string& key, double max) const {
+    return reader_.positive_up_to(value(key), key, max);
+}
 
 int MapReader::integer(const std::string& key, int min, int max) const {
     return reader_.integer(value(key), key, min, max);

@@ -38,6 +38,8 @@ public:
     double number_or(const std::string& key, double fallback) const;
     double number_at_least(const std::string& key, double min) const;
     double positive(const std::string& key) const;
+    double number_up_to(const std::string& key, double min, double max) const;
+    double positive_up_to(const std::string& key, double max) const;
     int integer(const std::string& key, int min, int max) const;
     bool boolean_or(const std::string& key, bool fallback) const;
     std::string string(const std::string& key) const;

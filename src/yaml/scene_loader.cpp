@@ -36,9 +36,9 @@ Material<double> read_material(const YamlReader& r, const YAML::Node& node, cons
     mat.ambient_color = m.has("ambient_color") ? m.color("ambient_color") : base;
     mat.diffuse_color = m.has("diffuse_color") ? m.color("diffuse_color") : base;
     mat.specular_color = m.has("specular_color") ? m.color("specular_color") : base;
-    mat.ambient = m.number_at_least("ambient", 0);
-    mat.diffuse = m.number_at_least("diffuse", 0);
-    mat.specular = m.number_at_least("specular", 0);
+    mat.ambient = m.number_up_to("ambient", 0, Limits::max_strength);
+    mat.diffuse = m.number_up_to("diffuse", 0, Limits::max_strength);
+    mat.specular = m.number_up_to("specular", 0, Limits::max_strength);
     mat.phong_exponent = m.number_at_least("phong_exponent", 0);
     mat.glazed = m.boolean_or("glazed", false);
     mat.reflectivity = m.has("reflectivity") ? m.number_at_least("reflectivity", 0) : 0;
@@ -61,19 +61,19 @@ void read_light(const YamlReader& r, const MapReader::Entry& entry, Scene& scene
         const MapReader m(r, entry.value, "ambient light '" + entry.key + "'", {"type", "color", "intensity"});
         if (!scene.ambient_lights.empty())
             r.fail(entry.key_node, "second ambient light '" + entry.key + "' (at most one is allowed)");
-        scene.ambient_lights.push_back({entry.key, m.color("color"), m.number_at_least("intensity", 0)});
+        scene.ambient_lights.push_back({entry.key, m.color("color"), m.number_up_to("intensity", 0, Limits::max_strength)});
     } else if (type == 1) {
         const MapReader m(r, entry.value, "directional light '" + entry.key + "'",
                           {"type", "color", "intensity", "direction"});
         scene.directional_lights.push_back(
-            {entry.key, m.color("color"), m.number_at_least("intensity", 0), unit_or_zero(m.direction("direction"))});
+            {entry.key, m.color("color"), m.number_up_to("intensity", 0, Limits::max_strength), unit_or_zero(m.direction("direction"))});
     } else {
         const MapReader m(r, entry.value, "spot light '" + entry.key + "'",
                           {"type", "color", "intensity", "position", "direction", "max_angle"});
         SpotLight<double> spot;
         spot.name = entry.key;
         spot.color = m.color("color");
-        spot.intensity = m.number_at_least("intensity", 0);
+        spot.intensity = m.number_up_to("intensity", 0, Limits::max_strength);
         spot.position = m.vec3("position");
         spot.axis = unit_or_zero(m.direction("direction"));
         spot.max_angle = m.has("max_angle") ? m.positive("max_angle") : kTwoPi;

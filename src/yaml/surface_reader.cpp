@@ -11,6 +11,7 @@
 
 #include "gltf/gltf_loader.h"
 #include "meshes/mesh_loader.h"
+#include "render/settings.h"
 #include "text/input_error.h"
 #include "yaml/map_reader.h"
 #include "yaml/placements.h"
@@ -103,7 +104,8 @@ private:
         named.name = name(m);
         named.kind = SurfaceKind::sphere;
         named.index = scene_.spheres().size();
-        named.local_sphere = {m.vec3("center"), m.positive("radius"), material_index(m, scene_)};
+        named.local_sphere = {m.vec3("center"), m.positive_up_to("radius", Limits::max_radius),
+                              material_index(m, scene_)};
         scene_.spheres().push_back(named.local_sphere);
         if (place.group < 0) return;
         const glm::dmat3 a(place.world);
@@ -124,7 +126,8 @@ private:
         const MapReader m(r_, node, "disk", {"type", "center", "normal", "radius", "material"});
         if (place.group >= 0) r_.fail(node, "a disk cannot be in a group (it cannot move yet)");
         scene_.shapes.of<Disk>().push_back(
-            {m.vec3("center"), unit_or_zero(m.direction("normal")), m.positive("radius"), material_index(m, scene_)});
+            {m.vec3("center"), unit_or_zero(m.direction("normal")), m.positive_up_to("radius", Limits::max_radius),
+             material_index(m, scene_)});
     }
 
     void read_plane(const YAML::Node& node, const Place& place, NamedSurface& named) {

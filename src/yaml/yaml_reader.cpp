@@ -4,6 +4,7 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <unordered_map>
@@ -299,6 +300,29 @@ double YamlReader::number_at_least(const YAML::Node& node, const std::string& na
 double YamlReader::positive(const YAML::Node& node, const std::string& name) const {
     const double value = number(node, name);
     if (!(value > 0)) fail(node, "'" + name + "' must be > 0, got " + node.Scalar());
+    return value;
+}
+
+namespace {
+// 1e12, 255: a limit as the docs write it.
+std::string limit_text(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    std::string s = text;
+    if (const size_t plus = s.find("e+"); plus != std::string::npos) s.erase(plus + 1, 1);
+    return s;
+}
+}  // namespace
+
+double YamlReader::number_up_to(const YAML::Node& node, const std::string& name, double min, double max) const {
+    const double value = number_at_least(node, name, min);
+    if (value > max) fail(node, "'" + name + "' must be at most " + limit_text(max) + ", got " + node.Scalar());
+    return value;
+}
+
+double YamlReader::positive_up_to(const YAML::Node& node, const std::string& name, double max) const {
+    const double value = positive(node, name);
+    if (value > max) fail(node, "'" + name + "' must be at most " + limit_text(max) + ", got " + node.Scalar());
     return value;
 }
 

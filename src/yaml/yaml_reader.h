@@ -43,6 +43,8 @@ public:
     double number(const YAML::Node& node, const std::string& name) const;  // finite
     double number_at_least(const YAML::Node& node, const std::string& name, double min) const;
     double positive(const YAML::Node& node, const std::string& name) const;  // finite, > 0
+    double number_up_to(const YAML::Node& node, const std::string& name, double min, double max) const;  // min..max
+    double positive_up_to(const YAML::Node& node, const std::string& name, double max) const;  // > 0, <= max
     int integer(const YAML::Node& node, const std::string& name, int min, int max) const;
     bool boolean(const YAML::Node& node, const std::string& name) const;
     std::string string(const YAML::Node& node, const std::string& name) const;

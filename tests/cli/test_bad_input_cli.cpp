@@ -126,6 +126,12 @@ TEST(BadInputCli, SceneFileMistakes) {
          "DIR/bad.yaml:10:26: error: 'look_at' must not be zero-length"},
         {"nan", {scene_with("intensity: 0.2", "intensity: .nan")}, render("bad.yaml"),
          "DIR/bad.yaml:6:63: error: 'intensity' must be finite"},
+        // Finite, but past what every product the tracer forms keeps finite:
+        // 1e308 made every pixel NaN, a radius of 1e155 a sphere that vanished.
+        {"intensity_huge", {scene_with("intensity: 0.2", "intensity: 1e308")}, render("bad.yaml"),
+         "DIR/bad.yaml:6:63: error: 'intensity' must be at most 1e12, got 1e308"},
+        {"radius_huge", {scene_with("radius: 1", "radius: 1e155")}, render("bad.yaml"),
+         "DIR/bad.yaml:4:47: error: 'radius' must be at most 1e12, got 1e155"},
         {"inf", {scene_with("center: [0, 0, 0]", "center: [0, .inf, 0]")}, render("bad.yaml"),
          "DIR/bad.yaml:4:32: error: 'center' must be finite"},
         {"width_zero", {scene_with("width: 64", "width: 0")}, render("bad.yaml"),
@@ -199,6 +205,8 @@ TEST(BadInputCli, MovieFileMistakes) {
          "DIR/bad.yaml:2:9: error: undefined camera 'perspectiv' (did you mean 'perspective'?)"},
         {"undefined_light", {{"bad.yaml", "scene: scene.yaml\nlights: [ambient, moon]\n"}}, frames("bad.yaml"),
          "DIR/bad.yaml:2:19: error: undefined light 'moon'"},
+        {"intensity_path_huge", {{"bad.yaml", "scene: scene.yaml\nanimate:\n  lights.sun.intensity: 1e300\n"}},
+         frames("bad.yaml"), "DIR/bad.yaml:3:3: error: lights.sun.intensity is 1e+300 at frame 0; it must be at most 1e12"},
         {"unknown_key", {{"bad.yaml", "scene: scene.yaml\nsecond: 3\n"}}, frames("bad.yaml"),
          "DIR/bad.yaml:2:1: error: unknown key 'second' in movie (did you mean 'seconds'?)"},
         {"error_in_its_scene", {scene_with("radius: 1", "radius: 0", "bad_scene.yaml"), {"bad.yaml", "scene: bad_scene.yaml\n"}},
