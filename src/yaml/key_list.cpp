@@ -1,5 +1,6 @@
 #include "yaml/key_list.h"
 
+#include <algorithm>
 #include <climits>
 #include <sstream>
 
@@ -30,10 +31,14 @@ std::vector<KeyNode> read_key_list(const YamlReader& r, const YAML::Node& list, 
         const bool timed = key.has("time");
         const YAML::Node at = key.value(timed ? "time" : "frame");
         const double frame = timed ? key.number_at_least("time", 0) * movie.fps : key.integer("frame", 0, INT_MAX);
-        if (frame > n + 1e-9 * n)
+        // The end is frame n, or `seconds` where fps x seconds is no whole
+        // number (fps 3, seconds 1.1: time 1.1 is frame 3.3); a millionth
+        // of it is rounding, as in a time written 2.0000001.
+        const double end = std::max(double(n), movie.fps * movie.seconds);
+        if (frame > end + 1e-6 * end)
             r.fail(at, "keyframe at " + (timed ? "time " + number_text(frame / movie.fps) + " s (frame " : "frame ") +
                            number_text(frame) + (timed ? ")" : "") + " is past the movie's end (frame " +
-                           std::to_string(n) + ", " + number_text(movie.seconds) + " s)");
+                           number_text(end) + ", " + number_text(movie.seconds) + " s)");
         if (!keys.empty() && frame == keys.back().frame) r.fail(at, "two keyframes at frame " + number_text(frame));
         if (!keys.empty() && frame < keys.back().frame)
             r.fail(at, "keyframes must be in increasing order: this one is at frame " + number_text(frame) +

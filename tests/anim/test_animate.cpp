@@ -154,6 +154,16 @@ TEST(Animate, TimeAndFrameKeysAgreeAtTheKeys) {
         EXPECT_EQ(e.formatted(), path + ":5:45: error: keyframe at time 2.5 s (frame 60) is past the movie's end "
                                         "(frame 48, 2 s)");
     }
+    // Where fps x seconds is no whole number the end is `seconds` itself:
+    // 3 fps for 1.1 s is frames 0..2 and a key at time 1.1 (frame 3.3) is
+    // its end (it was refused as past frame 3); rounding in a time is no
+    // step past it.
+    const Movie odd = load_movie(write_temp_file("animate_time/odd.yaml",
+        "scene: scene.yaml\nfps: 3\nseconds: 1.1\nanimate:\n  surfaces.ball.radius: {keyframes: [{frame: 0, value: 1},"
+        " {time: 1.1, value: 2}]}\n"));
+    EXPECT_NEAR(value_at(odd, odd.animations.at(0).target, 2).x, 1 + 2 / 3.3, 1e-12);
+    EXPECT_NO_THROW(load_movie(write_temp_file("animate_time/rounded.yaml",
+        "scene: scene.yaml\nfps: 24\nseconds: 2\nanimate:\n  surfaces.ball.radius: {keyframes: [{time: 2.0000001, value: 1}]}\n")));
 }
 
 TEST(Animate, FollowingAndAimingAtMovingThings) {
