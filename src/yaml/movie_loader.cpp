@@ -231,6 +231,10 @@ Toward read_toward(const YamlReader& r, const YAML::Node& node, const Movie& mov
     if (words.size() == 2 && words[0] == "lights") {
         for (size_t i = 0; i < scene.spot_lights.size(); ++i)
             if (scene.spot_lights[i].name == words[1]) return {dvec3(0), Follow{true, i, node.Scalar()}};
+        for (const auto& l : scene.directional_lights)
+            if (l.name == words[1]) r.fail(node, "'toward' cannot follow a directional light: it has no position");
+        for (const auto& l : scene.ambient_lights)
+            if (l.name == words[1]) r.fail(node, "'toward' cannot follow an ambient light: it has no position");
     }
     if (words.size() == 2 && words[0] == "surfaces") {
         if (const NamedSurface* s = scene.find_surface(words[1])) {

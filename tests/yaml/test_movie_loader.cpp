@@ -231,6 +231,14 @@ TEST(MovieLoader, TowardOnlyForLookAt) {
               "FILE:3:16: error: 'toward' is only allowed for 'camera.look_at' and a spot light's 'direction'");
 }
 
+// 'toward' a light that has no position says so (it said "no such thing").
+TEST(MovieLoader, TowardALightWithoutAPosition) {
+    EXPECT_EQ(movie_error("scene: scene.yaml\nanimate:\n  look_at: {toward: lights.sun}\n"),
+              "FILE:3:21: error: 'toward' cannot follow a directional light: it has no position");
+    EXPECT_EQ(movie_error("scene: scene.yaml\nanimate:\n  look_at: {toward: lights.amb}\n"),
+              "FILE:3:21: error: 'toward' cannot follow an ambient light: it has no position");
+}
+
 TEST(MovieLoader, OnePathKindPerProperty) {
     EXPECT_EQ(movie_error("scene: scene.yaml\n"
                           "animate:\n"
