@@ -1,9 +1,8 @@
 #include "anim/property.h"
 
-#include "render/settings.h"
-
 #include <cmath>
 
+#include "render/settings.h"
 #include "scene/instance.h"
 
 namespace fh {

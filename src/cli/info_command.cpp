@@ -110,8 +110,8 @@ int run_info(const Args& args) {
     const Job job = load_job(request);  // before printing: an error prints nothing else
     // Every frame's values checked as render and frames check them (scripts
     // ask info whether a movie will render; its warnings are theirs to say).
-    if (job.is_movie_file) check_movie_cameras(file, job.movie);
     if (job.is_movie_file) {
+        check_movie_cameras(file, job.movie);
         print_movie("movie", job.movie, job.frame >= 0 && request.frame ? job.frame : -1);
     } else {
         std::cout << "kind: scene\n";

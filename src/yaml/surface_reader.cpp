@@ -292,14 +292,15 @@ private:
         if (warnings_) warnings_->insert(warnings_->end(), file.warnings.begin(), file.warnings.end());
         named.index = scene_.groups.size();  // add_gltf's first group: the placement
         const std::string group = named.name.empty() ? "gltf" : named.name;
-        const std::vector<std::string> taken = camera_and_light_names();
+        std::vector<std::string> taken;
+        for (const std::string* name : names_from(0, 0, 0)) taken.push_back(*name);
         const size_t cameras = scene_.cameras.size(), suns = scene_.directional_lights.size(),
                      spots = scene_.spot_lights.size();
         std::vector<NodeAnimation> animations = add_gltf(scene_, std::move(file), group, named.transform, place.group);
         // Its cameras and lights are named as its materials are, GROUP/NAME:
         // a file placed twice is no clash of the names a movie or --camera
         // picks by. (Within one file names may repeat, as glTF allows.)
-        for (std::string* name : renamed_from(cameras, suns, spots)) {
+        for (std::string* name : names_from(cameras, suns, spots)) {
             *name = group + "/" + *name;
             if (std::find(taken.begin(), taken.end(), *name) != taken.end())
                 r_.fail(m.value("file"), "a second camera or light named '" + *name +
@@ -310,15 +311,8 @@ private:
         scene_.named_surfaces.push_back(named);
     }
 
-    std::vector<std::string> camera_and_light_names() const {
-        std::vector<std::string> names;
-        for (const Camera& c : scene_.cameras) names.push_back(c.name);
-        for (const auto& l : scene_.directional_lights) names.push_back(l.name);
-        for (const auto& l : scene_.spot_lights) names.push_back(l.name);
-        return names;
-    }
     // The names of the cameras and lights from these positions on.
-    std::vector<std::string*> renamed_from(size_t cameras, size_t suns, size_t spots) {
+    std::vector<std::string*> names_from(size_t cameras, size_t suns, size_t spots) {
         std::vector<std::string*> names;
         for (size_t k = cameras; k < scene_.cameras.size(); ++k) names.push_back(&scene_.cameras[k].name);
         for (size_t k = suns; k < scene_.directional_lights.size(); ++k)

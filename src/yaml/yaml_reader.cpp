@@ -326,20 +326,10 @@ double YamlReader::positive_up_to(const YAML::Node& node, const std::string& nam
     return value;
 }
 
-namespace {
-// A whole number written past what a long long holds (no minus sign).
-bool written_past_long_long(std::string_view s) {
-    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-    long long v = 0;
-    return !s.empty() && s.front() != '-' &&
-           std::from_chars(s.data(), s.data() + s.size(), v).ec == std::errc::result_out_of_range;
-}
-}  // namespace
-
 int YamlReader::integer(const YAML::Node& node, const std::string& name, int min, int max) const {
     long long value = 0;
     bool ok = node.IsScalar() && !is_text(node);
-    bool in_range = true;
+    bool in_range = true, too_large = false;
     if (ok) {
         std::string_view s = node.Scalar();
         if (!s.empty() && s.front() == '+') s.remove_prefix(1);
@@ -347,11 +337,11 @@ int YamlReader::integer(const YAML::Node& node, const std::string& name, int min
         const auto [ptr, ec] = std::from_chars(s.data(), end, value);
         ok = !s.empty() && ptr == end && (ec == std::errc() || ec == std::errc::result_out_of_range);
         in_range = ec == std::errc() && value >= min && value <= max;
+        too_large = ec == std::errc::result_out_of_range || value > max;
     }
     if (!ok) fail(node, "expected an integer for '" + name + "', " + got(node));
     if (!in_range) {
         // (">= 0" for 99999999999999999999 would read as if it were below 0.)
-        const bool too_large = value > max || (ok && written_past_long_long(node.Scalar()));
         const std::string range = max == INT_MAX && !too_large
                                       ? ">= " + std::to_string(min)
                                       : "between " + std::to_string(min) + " and " + std::to_string(max);
