@@ -1,6 +1,7 @@
 #include "gltf/gltf_nodes.h"
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 #include "scene/instance.h"
@@ -61,6 +62,25 @@ GltfNodeOrder order_gltf_nodes(const tinygltf::Model& m_, const std::string& fil
     return out;
 }
 
+namespace {
+
+// glTF's rotations are unit quaternions (x, y, z, w). Exporters round, so a
+// near-unit one is normalized; one near zero has no direction to normalize
+// to (glm would make it the identity without a word), so it is refused.
+template <typename Fail>
+glm::dquat unit_rotation(const double* xyzw, const std::string& what, Fail&& fail) {
+    const glm::dquat q(xyzw[3], xyzw[0], xyzw[1], xyzw[2]);
+    const double length = glm::length(q);
+    if (!(length >= 1e-6)) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", length);
+        fail(what + " is not a rotation (a quaternion of length " + text + "; glTF's are of length 1)");
+    }
+    return glm::normalize(q);  // as before this check: the same bits
+}
+
+}  // namespace
+
 SceneNode gltf_scene_node(const tinygltf::Node& node, int index, const std::string& file) {
     auto fail = [&](const std::string& what) { throw InputError(file, what); };
     SceneNode out;
@@ -77,7 +97,7 @@ SceneNode gltf_scene_node(const tinygltf::Node& node, int index, const std::stri
         out.translation = vec3_or(node.translation, dvec3(0));
         out.scale = vec3_or(node.scale, dvec3(1));
         if (node.rotation.size() == 4)
-            out.rotation = glm::normalize(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
+            out.rotation = unit_rotation(node.rotation.data(), out.name + ": 'rotation'", fail);
     }
     const glm::dmat4 local = out.local();
     for (int c = 0; c < 4; ++c)
@@ -112,7 +132,8 @@ std::vector<glm::dmat4> gltf_instancing_rows(const tinygltf::Node& node, const A
     for (size_t k = 0; k < rows; ++k) {
         SceneNode row;
         if (!t.empty()) row.translation = {t[3 * k], t[3 * k + 1], t[3 * k + 2]};
-        if (!r.empty()) row.rotation = glm::normalize(glm::dquat(r[4 * k + 3], r[4 * k], r[4 * k + 1], r[4 * k + 2]));
+        if (!r.empty())
+            row.rotation = unit_rotation(&r[4 * k], name + ": EXT_mesh_gpu_instancing's ROTATION row " + std::to_string(k), fail);
         if (!sc.empty()) row.scale = {sc[3 * k], sc[3 * k + 1], sc[3 * k + 2]};
         out.push_back(row.local());
     }

@@ -178,6 +178,16 @@ private:
 void check_gltf_schema(const nlohmann::json& root, const std::string& file) {
     if (!root.is_object()) throw InputError(file, "a glTF file is a JSON object");
     Checker(file).object_of(root, kRoot, "");
+    // node.schema.json's one rule beyond types: a matrix or TRS, not both.
+    // tinygltf would drop the TRS without a word, placing the node where
+    // its author may not have meant.
+    if (root.contains("nodes"))
+        for (size_t i = 0; i < root["nodes"].size(); ++i) {
+            const json& node = root["nodes"][i];
+            if (node.contains("matrix") && (node.contains("translation") || node.contains("rotation") || node.contains("scale")))
+                throw InputError(file, "nodes[" + std::to_string(i) +
+                                           "]: has both 'matrix' and translation, rotation or scale (glTF allows one or the other)");
+        }
 }
 
 }  // namespace fh

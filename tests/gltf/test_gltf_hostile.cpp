@@ -305,6 +305,41 @@ TEST(GltfHostile, InstancingRowOverflowingIsRefused) {
             "node 0: an EXT_mesh_gpu_instancing row times the node's transform is not finite");
 }
 
+// glTF allows a node a matrix or TRS, never both (node.schema.json); tinygltf
+// would keep the matrix and drop the rest without a word.
+TEST(GltfHostile, MatrixBesideTranslationRotationOrScale) {
+    const std::string identity = R"("matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1])";
+    for (const std::string trs : {R"("translation": [1,0,0])", R"("rotation": [0,0,0,1])", R"("scale": [2,2,2])"})
+        refused(gltf_json(kScene0 + R"("nodes": [{"name": "arm", )" + identity + ", " + trs + "}]"),
+                "nodes[0]: has both 'matrix' and translation, rotation or scale (glTF allows one or the other)");
+}
+
+// A quaternion near zero has no rotation to normalize to; a near-unit one
+// (as exporters round) is normalized: [0, 0, 0, 2] is the identity.
+TEST(GltfHostile, RotationOfLengthZeroIsRefusedAndANearUnitOneNormalized) {
+    refused(gltf_json(kScene0 + R"("nodes": [{"rotation": [0,0,0,0]}])"),
+            "node 0: 'rotation' is not a rotation (a quaternion of length 0; glTF's are of length 1)");
+    refused(gltf_json(kScene0 + R"("nodes": [{"rotation": [1e-9,0,0,0]}])"),
+            "node 0: 'rotation' is not a rotation (a quaternion of length 1e-09; glTF's are of length 1)");
+    const GltfFile f = load_gltf_from_memory(gltf_json(kScene0 + R"("nodes": [{"rotation": [0,0,0,2]}])"), "t.gltf",
+                                             "/nonexistent-folder");
+    ASSERT_EQ(f.scene.nodes.size(), 1u);
+    const glm::dmat4 local = f.scene.nodes[0].local();
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) EXPECT_EQ(local[c][r], c == r ? 1.0 : 0.0) << c << "," << r;
+}
+
+// The same for EXT_mesh_gpu_instancing's rows, named by row.
+TEST(GltfHostile, InstancingRotationOfLengthZeroIsRefused) {
+    Bin bin;
+    const int rot = bin.f32({0, 0, 0, 1, 0, 0, 0, 0});
+    const std::string more = ", " + accessor(rot, kFloat, 2, "VEC4");
+    refused(gltf_json(triangle_mesh(bin, more) + R"(, "extensionsUsed": ["EXT_mesh_gpu_instancing"],
+        "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "extensions":
+        {"EXT_mesh_gpu_instancing": {"attributes": {"ROTATION": 1}}}}])", bin),
+            "node 0: EXT_mesh_gpu_instancing's ROTATION row 1 is not a rotation (a quaternion of length 0; glTF's are of length 1)");
+}
+
 // -------------------------------------------------------------------- GLB
 
 std::string triangle_glb() {
