@@ -131,6 +131,14 @@ void check_folder(const std::string& what, const fs::path& folder) {
     if (!fs::is_directory(st)) throw InputError(what, "cannot write: '" + folder.string() + "' is not a folder");
     if (::access(folder.c_str(), W_OK | X_OK) != 0)
         throw InputError(what, "cannot write: folder '" + folder.string() + "': " + lower_strerror(errno));
+    // access() answers from the permission bits, and root passes them where
+    // creating a file still fails (/sys, a read-only mount): so create one,
+    // named as write_file_atomic's temporaries (a killed run's is cleaned up).
+    const std::string probe = temporary_name((folder / ".firsthit-probe").string(), UINT_MAX);
+    std::FILE* f = std::fopen(probe.c_str(), "wb");
+    if (!f) throw InputError(what, "cannot write: folder '" + folder.string() + "': " + lower_strerror(errno));
+    std::fclose(f);
+    std::remove(probe.c_str());
 }
 
 }  // namespace

@@ -135,6 +135,18 @@ TEST(PngWriter, OutputFileMustHaveAWritableFolder) {
     }
 }
 
+// /sys refuses new files even to root, whom access() lets through: the
+// check creates one to know, and leaves nothing behind where it can.
+TEST(PngWriter, FolderThatRefusesNewFilesIsFoundBeforeRendering) {
+    if (fs::is_directory("/sys"))
+        EXPECT_EQ(output_error(check_output_file, "/sys/x.png"),
+                  "/sys/x.png: error: cannot write: folder '/sys': permission denied");
+    const fs::path dir = fresh("png_probe");
+    EXPECT_EQ(output_error(check_output_file, (dir / "a.png").string()), "(no error)");
+    EXPECT_EQ(output_error(prepare_output_folder, dir.string()), "(no error)");
+    EXPECT_TRUE(fs::is_empty(dir));
+}
+
 TEST(PngWriter, OutputFolderIsCreatedOrRefused) {
     const fs::path dir = fresh("png_folder");
     touch(dir / "file");
