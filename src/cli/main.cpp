@@ -27,6 +27,16 @@ bool asks_for_help(const Words& words) {
     return std::any_of(words.begin(), words.end(), [](const std::string& w) { return w == "--help" || w == "-h"; });
 }
 
+// The command of that name, or a usage error that names the closest one.
+const CommandSpec& command_named(const std::string& name) {
+    if (const CommandSpec* command = find_command(name)) return *command;
+    std::vector<std::string> names;
+    for (const CommandSpec& c : all_commands()) names.emplace_back(c.name);
+    const std::string near = closest_match(name, names);
+    throw UsageError("unknown command '" + name + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
+                     "; see 'firsthit --help'");
+}
+
 int dispatch(int argc, char** argv) {
     if (argc < 2) {
         std::cerr << overview_help() << "\n";
@@ -34,6 +44,10 @@ int dispatch(int argc, char** argv) {
     }
     const std::string cmd = argv[1];
     const Words words(argv + 2, argv + argc);
+    if (cmd == "help" && words.size() == 1) {  // as git's `help COMMAND`
+        std::cout << command_help(command_named(words[0])) << "\n";
+        return 0;
+    }
     if (cmd == "--help" || cmd == "-h" || cmd == "help") {
         std::cout << overview_help() << "\n";
         return 0;
@@ -53,19 +67,12 @@ int dispatch(int argc, char** argv) {
                   << bytes / 4 << " floats a packet)\n";
         return 0;
     }
-    const CommandSpec* command = find_command(cmd);
-    if (!command) {
-        std::vector<std::string> names;
-        for (const CommandSpec& c : all_commands()) names.emplace_back(c.name);
-        const std::string near = closest_match(cmd, names);
-        throw UsageError("unknown command '" + cmd + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
-                         "; see 'firsthit --help'");
-    }
+    const CommandSpec& command = command_named(cmd);
     if (asks_for_help(words)) {
-        std::cout << command_help(*command) << "\n";
+        std::cout << command_help(command) << "\n";
         return 0;
     }
-    return kRun.at(command->name)(Args::parse(*command, words));
+    return kRun.at(command.name)(Args::parse(command, words));
 }
 
 }  // namespace

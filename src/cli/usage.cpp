@@ -107,7 +107,7 @@ std::string overview_help() {
     out += "\n" + paragraphs(
                       "FILE is a scene file or a movie file (a movie names its scene); see animations/scene.yaml "
                       "and animations/movie1.yaml, and docs/format.md for every key. 'firsthit COMMAND --help' "
-                      "shows a command's options only.\n\n"
+                      "(or 'firsthit help COMMAND') shows a command's options only.\n\n"
                       "exit status: 0 success, 2 bad input or usage (one line on stderr: FILE:LINE:COLUMN: "
                       "error: WHAT), 1 any other failure. A failed run writes no partial image.");
     out.pop_back();

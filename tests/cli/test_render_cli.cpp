@@ -17,6 +17,18 @@ TEST(RenderCli, HelpNamesEveryCommand) {
     EXPECT_NE(run_firsthit("render --help").out.find("--camera NAME"), std::string::npos);
 }
 
+// `help COMMAND` is `COMMAND --help`, as in git; a misspelt one is named.
+TEST(RenderCli, HelpCommandShowsThatCommandsHelp) {
+    const auto r = run_firsthit("help frames");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out, run_firsthit("frames --help").out);
+    EXPECT_NE(r.out.find("--out"), std::string::npos);
+    const auto bad = run_firsthit("help frmaes");
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_EQ(bad.err, "firsthit: error: unknown command 'frmaes' (did you mean 'frames'?); see 'firsthit --help'\n");
+    EXPECT_EQ(bad.out, "");
+}
+
 TEST(RenderCli, RendersBothCamerasWithStats) {
     const auto dir = fresh_dir("render_cli");
     for (const std::string cam : {"perspective", "orthographic"}) {
