@@ -1,18 +1,24 @@
 #include "anim/frame_selection.h"
 
-#include <cerrno>
-#include <cstdlib>
+#include <algorithm>
 #include <stdexcept>
 
 namespace fh {
 
+std::string frame_number_problem(const std::string& text, long long& value) {
+    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return "is not a whole number >= 0";
+    const size_t first = std::min(text.find_first_not_of('0'), text.size() - 1);  // leading zeros say nothing
+    if (text.size() - first > 10 || std::stoll(text.substr(first)) > kMaxFrameNumber)
+        return "is more than " + std::to_string(kMaxFrameNumber);
+    value = std::stoll(text.substr(first));
+    return "";
+}
+
 namespace {
 int parse_nonnegative(const std::string& s, const std::string& what) {
-    errno = 0;
-    char* end = nullptr;
-    const long long v = std::strtoll(s.c_str(), &end, 10);
-    if (s.empty() || *end != '\0' || errno == ERANGE || v < 0 || v > 1'000'000'000)
-        throw std::invalid_argument(what + ": '" + s + "' is not a whole number >= 0");
+    long long v = 0;
+    const std::string problem = frame_number_problem(s, v);
+    if (!problem.empty()) throw std::invalid_argument(what + ": '" + s + "' " + problem);
     return int(v);
 }
 }  // namespace

@@ -29,5 +29,10 @@ std::vector<int> select_frames(int frame_count, std::optional<FrameRange> range,
 FrameRange parse_range(const std::string& text);
 Shard parse_shard(const std::string& text);
 
+// A frame number, shard or count as text: digits only, at most
+// kMaxFrameNumber. Empty when `text` is one (and `value` set), else what is
+// wrong with it: "is not a whole number >= 0" or "is more than 1000000000".
+inline constexpr long long kMaxFrameNumber = 1'000'000'000;
+std::string frame_number_problem(const std::string& text, long long& value);
 
 }  // namespace fh

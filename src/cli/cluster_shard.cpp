@@ -12,13 +12,9 @@ std::optional<long long> env_number(const EnvLookup& env, const char* name) {
     const char* v = env(name);
     if (v == nullptr) return std::nullopt;
     const std::string s = v;
-    // Digits only: no sign, no spaces, at most 1e9.
-    const bool digits = !s.empty() && s.size() <= 10 &&
-                        s.find_first_not_of("0123456789") == std::string::npos;
-    const long long n = digits ? std::stoll(s) : -1;
-    if (n < 0 || n > 1'000'000'000)
-        throw std::invalid_argument(std::string("--shard auto: ") + name + "='" + s +
-                                    "' is not a whole number >= 0");
+    long long n = 0;
+    const std::string problem = frame_number_problem(s, n);  // no sign, no spaces
+    if (!problem.empty()) throw std::invalid_argument(std::string("--shard auto: ") + name + "='" + s + "' " + problem);
     return n;
 }
 

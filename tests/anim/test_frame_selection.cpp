@@ -55,6 +55,21 @@ TEST(FrameSelection, InclusiveAndOpenRanges) {
     }
 }
 
+// Digits only, leading zeros allowed, at most 10^9; what is wrong is said.
+TEST(FrameSelection, FrameNumberProblems) {
+    long long v = -1;
+    EXPECT_EQ(frame_number_problem("0", v), "");
+    EXPECT_EQ(v, 0);
+    EXPECT_EQ(frame_number_problem("000000000000042", v), "");
+    EXPECT_EQ(v, 42);
+    EXPECT_EQ(frame_number_problem("1000000000", v), "");
+    EXPECT_EQ(v, 1000000000);
+    for (const char* bad : {"", "+5", " 5", "5 ", "-0", "1e3", "0x10"})
+        EXPECT_EQ(frame_number_problem(bad, v), "is not a whole number >= 0") << bad;
+    for (const char* big : {"1000000001", "9999999999", "99999999999999999999999"})
+        EXPECT_EQ(frame_number_problem(big, v), "is more than 1000000000") << big;
+    EXPECT_EQ(v, 1000000000);  // untouched by a refusal
+}
 
 }  // namespace
 }  // namespace fh

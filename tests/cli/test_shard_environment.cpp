@@ -102,10 +102,14 @@ TEST(ShardFromEnvironment, SlurmMalformedOrMissingValues) {
               "--shard auto: SLURM_ARRAY_TASK_ID is set but SLURM_ARRAY_TASK_COUNT is not (need a count >= 1)");
     EXPECT_EQ(error({{"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_COUNT", "0"}}),
               "--shard auto: SLURM_ARRAY_TASK_ID is set but SLURM_ARRAY_TASK_COUNT is 0 (need a count >= 1)");
-    for (const char* bad : {"", "x", "1x", "-1", " 1", "1.5", "99999999999999999999"})
+    for (const char* bad : {"", "x", "1x", "-1", " 1", "1.5"})
         EXPECT_EQ(error({{"SLURM_ARRAY_TASK_ID", bad}, {"SLURM_ARRAY_TASK_COUNT", "4"}}),
                   std::string("--shard auto: SLURM_ARRAY_TASK_ID='") + bad + "' is not a whole number >= 0")
             << bad;
+    for (const char* big : {"1000000001", "99999999999999999999"})
+        EXPECT_EQ(error({{"SLURM_ARRAY_TASK_ID", big}, {"SLURM_ARRAY_TASK_COUNT", "4"}}),
+                  std::string("--shard auto: SLURM_ARRAY_TASK_ID='") + big + "' is more than 1000000000")
+            << big;
     EXPECT_EQ(error({{"SLURM_ARRAY_TASK_ID", "1"}, {"SLURM_ARRAY_TASK_COUNT", "four"}}),
               "--shard auto: SLURM_ARRAY_TASK_COUNT='four' is not a whole number >= 0");
     EXPECT_EQ(error({{"SLURM_ARRAY_TASK_ID", "1"}, {"SLURM_ARRAY_TASK_COUNT", "4"}, {"SLURM_ARRAY_TASK_MIN", "?"}}),
