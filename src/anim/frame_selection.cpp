@@ -8,9 +8,10 @@ namespace fh {
 std::string frame_number_problem(const std::string& text, long long& value) {
     if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return "is not a whole number >= 0";
     const size_t first = std::min(text.find_first_not_of('0'), text.size() - 1);  // leading zeros say nothing
-    if (text.size() - first > 10 || std::stoll(text.substr(first)) > kMaxFrameNumber)
-        return "is more than " + std::to_string(kMaxFrameNumber);
-    value = std::stoll(text.substr(first));
+    // More than ten digits would overflow stoll; they are past the limit anyway.
+    const long long v = text.size() - first > 10 ? kMaxFrameNumber + 1 : std::stoll(text.substr(first));
+    if (v > kMaxFrameNumber) return "is more than " + std::to_string(kMaxFrameNumber);
+    value = v;
     return "";
 }
 
